@@ -1,0 +1,118 @@
+#pragma once
+// A scene: what to simulate and how. Plain structs with in-class defaults (units in the comment);
+// scene/scene_json.cpp converts JSON to these and rejects unknown keys, wrong types and
+// out-of-range values with an InputError naming the file and the JSON path of the field.
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "material/material.h"
+#include "util/types.h"
+
+namespace weft {
+
+struct GridSpec {
+  double width = 1.0;   // extent along material x (m)
+  double height = 1.0;  // extent along material y (m)
+  int resolutionX = 32; // vertices along x (>= 2)
+  int resolutionY = 32; // vertices along y (>= 2)
+};
+
+struct ObjSpec {
+  std::filesystem::path path;  // resolved against the scene file's folder, then the project root
+  double uvScale = 1.0;        // metres per UV unit: UVs times this become rest coordinates
+};
+
+// Where a mesh is placed in the world: world = rotate(rest) + translate. A grid lies in its rest
+// plane (material x -> world x, material y -> world y, z = 0) before this transform.
+struct Placement {
+  Vec3 translate = Vec3::Zero();  // m
+  Vec3 rotateDeg = Vec3::Zero();  // rotation about world x, then y, then z (degrees)
+};
+
+struct PinKeyframe {
+  double time = 0.0;              // s
+  Vec3 offset = Vec3::Zero();     // displacement from the pinned vertices' start positions (m)
+};
+
+// A group of pinned vertices, chosen by corner names, by a box in material space, or by id.
+struct PinGroup {
+  std::vector<std::string> corners;  // any of "top_left", "top_right", "bottom_left", "bottom_right" (grid, material space: top = max y)
+  std::optional<std::pair<Vec2, Vec2>> restBox;  // min and max corner in material space (m)
+  std::vector<int> vertices;         // explicit vertex ids
+  std::vector<PinKeyframe> script;   // empty: fixed; otherwise piecewise-linear offsets over time, held after the last key
+};
+
+struct ClothSpec {
+  std::string name = "cloth";
+  std::optional<GridSpec> grid;  // exactly one of grid and obj
+  std::optional<ObjSpec> obj;
+  Placement placement;
+  std::string materialName;      // the preset's name, or "inline"
+  Material material;             // resolved material (preset or inline)
+  double weftAngleDeg = 0.0;     // weft direction U in material space, degrees from material x
+  std::vector<PinGroup> pins;
+};
+
+struct WindSpec {
+  Vec3 velocity = Vec3::Zero();  // wind velocity (m/s); zero means no wind stage
+  double airDensity = 1.2;       // kg/m^3
+  double drag = 1.0;             // drag coefficient along the triangle normal
+  double lift = 0.2;             // lift coefficient (acts perpendicular to the relative velocity)
+  double gustAmplitude = 0.0;    // relative amplitude of a smooth deterministic gust, in [0, 1]
+  double gustFrequency = 0.5;    // Hz
+};
+
+struct DampingSpec {
+  double mass = 0.0;       // mass-proportional damping coefficient (1/s): f = -mass * m v
+  double stiffness = 0.0;  // stiffness-proportional (Rayleigh) damping coefficient (s): f = -stiffness * K v
+};
+
+struct ForcesSpec {
+  Vec3 gravity{0.0, -9.81, 0.0};  // m/s^2
+  WindSpec wind;
+  DampingSpec damping;
+};
+
+enum class IntegratorKind { LinearizedBackwardEuler, Newton, SymplecticEuler };
+enum class LinearSolverKind { ConjugateGradient, Cholmod };
+
+struct SolverSpec {
+  double dt = 1.0 / 60.0;         // time step (s)
+  int substeps = 1;               // each step is split into this many equal substeps
+  IntegratorKind integrator = IntegratorKind::LinearizedBackwardEuler;
+  int newtonMaxIterations = 10;   // Newton: iteration bound per (sub)step
+  double newtonTolerance = 1e-6;  // Newton: stop when the max velocity change of an iteration is below this (m/s)
+  LinearSolverKind linearSolver = LinearSolverKind::ConjugateGradient;
+  double linearTolerance = 1e-6;  // CG: relative residual |r|/|b|
+  int linearMaxIterations = 1000; // CG: iteration bound
+  int threads = 1;                // worker threads for force assembly (results do not depend on it)
+};
+
+// Stages a scene may switch off explicitly; a stage that has nothing to do is skipped anyway.
+struct StageSwitches {
+  bool bending = true;
+  bool wind = true;
+  bool gravity = true;
+};
+
+struct OutputSpec {
+  int frames = 120;     // frames to simulate in `weft run`
+  double fps = 30.0;    // frames per simulated second; steps per frame = round(1/(fps*dt))
+};
+
+struct Scene {
+  std::filesystem::path file;       // where it was loaded from (for messages and relative paths)
+  std::string name;
+  std::string description;
+  std::vector<ClothSpec> cloths;
+  ForcesSpec forces;
+  SolverSpec solver;
+  StageSwitches stages;
+  OutputSpec output;
+};
+
+int stepsPerFrame(const Scene& scene);
+
+}  // namespace weft
