@@ -23,6 +23,8 @@ struct MeasuredElasticity {
   StretchCoefficients zeroStrain{};                // row 0: the sample at zero strain
   std::array<StretchCoefficients, 5> directions{};  // rows 1-5: principal stretch at 0, 22.5, 45, 67.5, 90 deg from U
   double referenceStretch = 7.0 / 6.0;             // principal stretch lambda at which rows 1-5 were measured
+
+  friend bool operator==(const MeasuredElasticity&, const MeasuredElasticity&) = default;
 };
 
 struct ElasticitySettings {
@@ -32,6 +34,9 @@ struct ElasticitySettings {
   double poissonRatio = 0.3;     // isotropic Poisson ratio, in [0, 0.5)
   MeasuredElasticity measured;   // used when model == Measured
   double stiffnessScale = 1.0;   // multiplies every stiffness (a scene-side knob, like ARCSim's stretching_mult)
+
+  // Compares every field, including those the chosen model does not use.
+  friend bool operator==(const ElasticitySettings&, const ElasticitySettings&) = default;
 };
 
 struct ElasticityResponse {
@@ -44,7 +49,8 @@ struct ElasticityResponse {
 ElasticityResponse evaluateElasticity(const ElasticitySettings& settings, const Eigen::Vector3d& strain,
                                       bool wantTangent);
 
-// The measured-data matrix C(e) alone (3x3, acting on (e_uu, e_vv, gamma_uv)), for plots and tests.
+// The matrix C(e) alone (3x3, acting on (e_uu, e_vv, gamma_uv), stiffnessScale applied), for plots and
+// tests: the measured-data C at this strain, or the constant E of Eq. 2.11 for the isotropic model.
 Eigen::Matrix3d elasticityMatrix(const ElasticitySettings& settings, const Eigen::Vector3d& strain);
 
 }  // namespace weft

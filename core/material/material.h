@@ -4,6 +4,7 @@
 #include <array>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json_fwd.hpp>
 
@@ -19,6 +20,9 @@ struct BendingSettings {
   // and by curvature (columns: alpha = 0, 5, 10, 15, 20 1/m), as FORMAT.md describes.
   std::array<std::array<double, 5>, 3> measured{};
   double stiffnessScale = 1.0;  // multiplies every bending stiffness
+
+  // Compares every field, including those the chosen model does not use.
+  friend bool operator==(const BendingSettings&, const BendingSettings&) = default;
 };
 
 struct Material {
@@ -27,6 +31,8 @@ struct Material {
   double areaDensity = 0.2;    // kg/m^2
   ElasticitySettings elasticity;
   BendingSettings bending;
+
+  friend bool operator==(const Material&, const Material&) = default;
 };
 
 // Parses a material object. `file` and `path` name where it came from in error messages

@@ -8,15 +8,10 @@
 
 #include "mesh/cloth_mesh.h"
 #include "scene/scene.h"
+#include "sim/stage_profile.h"
 
 namespace weft {
 
-// Cumulative wall time per stage, in the order the stages run.
-struct StageProfile {
-  std::vector<std::string> names;
-  std::vector<double> totalMs;
-  void add(const std::string& name, double ms);
-};
 
 struct SolverStats {
   long long linearIterations = 0;   // total linear-solver iterations (CG) since the start

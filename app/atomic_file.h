@@ -1,0 +1,13 @@
+#pragma once
+// Output files are written whole or not at all: a crash, a full disk or Ctrl-C in the middle of a
+// write must never leave a truncated metrics.json or OBJ that a later script mistakes for a result.
+#include <filesystem>
+#include <string>
+
+namespace weft::app {
+
+// Writes `contents` to `file` by writing `file`.tmp and renaming it over `file`. Throws
+// std::runtime_error naming the file when any part fails (the .tmp is removed).
+void writeFileAtomically(const std::filesystem::path& file, const std::string& contents);
+
+}  // namespace weft::app

@@ -1,0 +1,350 @@
+// `weft bench`: time the hanging sheet over mesh sizes, integrators and linear solvers.
+//
+// Each configuration is run `repeats` times from a fresh World: warm-up steps first (the first
+// steps allocate, factor and settle), then `steps` timed steps. The simulation is deterministic,
+// so every repeat does the same work and the median time per step is a fair summary of the noise.
+// Results go to a table on stdout and a CSV whose header names the machine, so results from
+// different machines can be committed side by side.
+#include <sys/utsname.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <ctime>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "atomic_file.h"
+#include "command.h"
+#include "material/elasticity.h"
+#include "metrics_writer.h"
+#include "scene/scene_json.h"
+#include "sim/world.h"
+#include "util/input_error.h"
+
+namespace weft::app {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct BenchOptions {
+  std::vector<int> sizes{32, 64, 128, 256};
+  std::vector<std::string> integrators{"lbe", "newton", "symplectic"};
+  std::vector<std::string> solvers{"cg", "cholmod"};
+  int steps = 20;
+  int warmup = 5;
+  int repeats = 3;
+  int threads = 1;
+  int symplecticSubsteps = 0;  // 0: chosen from the mesh and material (see stableSymplecticSubsteps)
+  std::string csv = "out/bench/bench.csv";
+  std::string scene;  // default: presets/scenes/hanging-sheet.json of this source tree
+};
+
+struct Configuration {
+  int size = 0;
+  std::string integrator;  // short name, as on the command line
+  std::string solver;      // "none" for the explicit integrator
+};
+
+struct Result {
+  Configuration config;
+  int vertices = 0;
+  int triangles = 0;
+  double dt = 0.0;
+  int substeps = 1;
+  double medianMsPerStep = 0.0;
+  double minMsPerStep = 0.0;
+  double maxMsPerStep = 0.0;
+  double linearIterationsPerStep = 0.0;
+  double newtonIterationsPerStep = 0.0;
+  bool finite = true;
+  std::vector<std::pair<std::string, double>> stageShares;  // name, percent of the timed steps
+};
+
+std::string sceneIntegratorName(const std::string& shortName) {
+  if (shortName == "lbe") return "linearized_backward_euler";
+  if (shortName == "newton") return "newton";
+  return "symplectic_euler";
+}
+
+// An explicit step is stable only below the period of the stiffest mode. For a mesh of edge
+// length h, membrane waves travel at c = sqrt(k / rho) (k: largest membrane tangent stiffness,
+// N/m; rho: area density) and the shortest period is about h / c; bending waves are dispersive
+// and limit the step to about h^2 / sqrt(kb / rho). A factor 1/2 covers the triangle mesh not
+// being a lattice. Returns substeps per scene step (dt).
+int stableSymplecticSubsteps(const Scene& scene) {
+  double stableDt = scene.solver.dt;
+  for (const ClothSpec& cloth : scene.cloths) {
+    if (!cloth.grid) continue;
+    const GridSpec& g = *cloth.grid;
+    const double h = std::min(g.width / (g.resolutionX - 1), g.height / (g.resolutionY - 1));
+    double k = 0.0;
+    for (const Eigen::Vector3d& strain :
+         {Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(0.1, 0, 0), Eigen::Vector3d(0, 0.1, 0), Eigen::Vector3d(0.1, 0.1, 0.1)}) {
+      const Eigen::Matrix3d tangent = evaluateElasticity(cloth.material.elasticity, strain, true).tangent;
+      k = std::max(k, tangent.cwiseAbs().rowwise().sum().maxCoeff());  // bounds the largest eigenvalue
+    }
+    double kb = cloth.material.bending.stiffness;
+    if (cloth.material.bending.model == BendingSettings::Model::Measured) {
+      for (const auto& row : cloth.material.bending.measured) kb = std::max(kb, *std::max_element(row.begin(), row.end()));
+    }
+    kb *= cloth.material.bending.stiffnessScale;
+    const double rho = cloth.material.areaDensity;
+    stableDt = std::min(stableDt, 0.5 * h / std::sqrt(k / rho));
+    if (kb > 0.0) stableDt = std::min(stableDt, 0.5 * h * h / std::sqrt(kb / rho));
+  }
+  return std::max(1, static_cast<int>(std::ceil(scene.solver.dt / stableDt)));
+}
+
+double median(std::vector<double> values) {
+  std::sort(values.begin(), values.end());
+  const std::size_t n = values.size();
+  return n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+std::vector<std::string> overridesFor(const Configuration& config, const BenchOptions& options) {
+  std::vector<std::string> overrides{
+      "cloths.0.mesh.grid.resolution=[" + std::to_string(config.size) + "," + std::to_string(config.size) + "]",
+      "solver.integrator=" + sceneIntegratorName(config.integrator),
+      "solver.threads=" + std::to_string(options.threads),
+  };
+  if (config.solver != "none") overrides.push_back("solver.linear_solver.type=" + config.solver);
+  return overrides;
+}
+
+Result runConfiguration(const Configuration& config, const BenchOptions& options, const fs::path& sceneFile) {
+  Scene scene = loadScene(sceneFile, overridesFor(config, options));
+  if (config.integrator == "symplectic") {
+    // Reported per 1/60 s step, split into as many substeps as stability needs, so that its time
+    // per step compares with the implicit integrators' at the same simulated time.
+    scene.solver.dt = 1.0 / 60.0;
+    scene.solver.substeps =
+        options.symplecticSubsteps > 0 ? options.symplecticSubsteps : stableSymplecticSubsteps(scene);
+  }
+
+  Result result;
+  result.config = config;
+  result.dt = scene.solver.dt;
+  result.substeps = scene.solver.substeps;
+  std::vector<double> msPerStep;
+  std::map<std::string, double> stageMs;
+  std::vector<std::string> stageOrder;
+  for (int repeat = 0; repeat < options.repeats; ++repeat) {
+    World world(scene);
+    for (int s = 0; s < options.warmup; ++s) world.step();
+    const StageProfile before = world.profile();
+    const SolverStats statsBefore = world.solverStats();
+
+    const auto start = std::chrono::steady_clock::now();
+    for (int s = 0; s < options.steps; ++s) world.step();
+    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    msPerStep.push_back(ms / options.steps);
+
+    const StageProfile& after = world.profile();
+    for (std::size_t k = 0; k < after.names.size(); ++k) {
+      const auto it = std::find(before.names.begin(), before.names.end(), after.names[k]);
+      const double earlier = it == before.names.end() ? 0.0 : before.totalMs[static_cast<std::size_t>(it - before.names.begin())];
+      if (!stageMs.count(after.names[k])) stageOrder.push_back(after.names[k]);
+      stageMs[after.names[k]] += after.totalMs[k] - earlier;
+    }
+    const SolverStats& stats = world.solverStats();
+    result.linearIterationsPerStep = double(stats.linearIterations - statsBefore.linearIterations) / options.steps;
+    result.newtonIterationsPerStep = double(stats.newtonIterations - statsBefore.newtonIterations) / options.steps;
+    result.finite = result.finite && world.metrics().finite;
+    result.vertices = 0;
+    result.triangles = 0;
+    for (int i = 0; i < world.clothCount(); ++i) {
+      result.vertices += world.cloth(i).vertexCount();
+      result.triangles += world.cloth(i).triangleCount();
+    }
+  }
+  result.medianMsPerStep = median(msPerStep);
+  result.minMsPerStep = *std::min_element(msPerStep.begin(), msPerStep.end());
+  result.maxMsPerStep = *std::max_element(msPerStep.begin(), msPerStep.end());
+  double total = 0.0;
+  for (const auto& [name, ms] : stageMs) total += ms;
+  for (const auto& name : stageOrder) result.stageShares.emplace_back(name, total > 0 ? 100.0 * stageMs[name] / total : 0.0);
+  return result;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Machine description for the CSV header.
+
+std::string cpuModel() {
+  std::ifstream cpuinfo("/proc/cpuinfo");
+  std::string line;
+  while (std::getline(cpuinfo, line)) {
+    if (line.rfind("model name", 0) == 0) {
+      const auto colon = line.find(':');
+      if (colon != std::string::npos) return line.substr(line.find_first_not_of(" \t", colon + 1));
+    }
+  }
+  return "unknown CPU";
+}
+
+std::string machineName() {
+  utsname names{};
+  return uname(&names) == 0 ? std::string(names.machine) : std::string("unknown");
+}
+
+std::string gitDescribe() {
+  const std::string command = std::string("git -C '") + WEFT_SOURCE_DIR + "' describe --always --dirty 2>/dev/null";
+  std::string out;
+  if (FILE* pipe = popen(command.c_str(), "r")) {
+    char buffer[256];
+    while (std::fgets(buffer, sizeof buffer, pipe)) out += buffer;
+    pclose(pipe);
+  }
+  while (!out.empty() && (out.back() == '\n' || out.back() == '\r')) out.pop_back();
+  return out.empty() ? "unknown" : out;
+}
+
+std::string utcDate() {
+  const std::time_t now = std::time(nullptr);
+  std::tm tm{};
+  gmtime_r(&now, &tm);
+  char text[32];
+  std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &tm);
+  return text;
+}
+
+std::string sharesText(const Result& r, const char* separator, int limit) {
+  std::vector<std::pair<std::string, double>> shares = r.stageShares;
+  if (limit > 0) {
+    std::stable_sort(shares.begin(), shares.end(), [](const auto& a, const auto& b) { return a.second > b.second; });
+    if (static_cast<int>(shares.size()) > limit) shares.resize(static_cast<std::size_t>(limit));
+  }
+  std::string out;
+  char item[96];
+  for (const auto& [name, percent] : shares) {
+    std::snprintf(item, sizeof item, "%s%s %.1f%%", out.empty() ? "" : separator, name.c_str(), percent);
+    out += item;
+  }
+  return out;
+}
+
+std::string csvText(const std::vector<Result>& results, const BenchOptions& options, const fs::path& sceneFile) {
+  std::ostringstream csv;
+  csv << "# weft bench; machine: " << machineName() << "; cpu: " << cpuModel()
+      << "; cores: " << std::thread::hardware_concurrency() << "; threads: " << options.threads
+      << "; git: " << gitDescribe() << "; date: " << utcDate() << "; scene: " << sceneFile.string() << "\n";
+  csv << "size,vertices,triangles,integrator,linear_solver,dt,substeps,warmup,steps,repeats,"
+         "median_ms_per_step,min_ms_per_step,max_ms_per_step,ms_per_step_per_1000_vertices,"
+         "linear_iterations_per_step,newton_iterations_per_step,finite,stage_shares\n";
+  char line[512];
+  for (const Result& r : results) {
+    std::snprintf(line, sizeof line, "%d,%d,%d,%s,%s,%.9g,%d,%d,%d,%d,%.4f,%.4f,%.4f,%.4f,%.2f,%.2f,%s,", r.config.size,
+                  r.vertices, r.triangles, sceneIntegratorName(r.config.integrator).c_str(), r.config.solver.c_str(),
+                  r.dt, r.substeps, options.warmup, options.steps, options.repeats, r.medianMsPerStep, r.minMsPerStep,
+                  r.maxMsPerStep, 1000.0 * r.medianMsPerStep / std::max(1, r.vertices), r.linearIterationsPerStep,
+                  r.newtonIterationsPerStep, r.finite ? "true" : "false");
+    csv << line << '"' << sharesText(r, ";", 0) << "\"\n";
+  }
+  return csv.str();
+}
+
+fs::path defaultBenchScene() {
+  if (const char* data = std::getenv("WEFT_DATA_DIR"); data != nullptr && *data != '\0') {
+    const fs::path candidate = fs::path(data) / "presets" / "scenes" / "hanging-sheet.json";
+    if (fs::is_regular_file(candidate)) return candidate;
+  }
+  return fs::path(WEFT_SOURCE_DIR) / "presets" / "scenes" / "hanging-sheet.json";
+}
+
+int runBench(const BenchOptions& options) {
+  const fs::path sceneFile = options.scene.empty() ? defaultBenchScene() : fs::path(options.scene);
+
+  std::vector<Configuration> configs;
+  for (int size : options.sizes) {
+    for (const auto& integrator : options.integrators) {
+      if (integrator == "symplectic") {
+        configs.push_back({size, integrator, "none"});  // no linear solve: one run is enough
+        continue;
+      }
+      for (const auto& solver : options.solvers) configs.push_back({size, integrator, solver});
+    }
+  }
+
+  // Every configuration is loaded once before anything is timed, so a bad scene or size fails
+  // in a second rather than after an hour of benchmarking.
+  try {
+    for (const auto& config : configs) (void)loadScene(sceneFile, overridesFor(config, options));
+  } catch (const InputError& e) {
+    std::cerr << "weft: " << e.what() << "\n";
+    return kExitBadInput;
+  }
+
+  std::printf("%6s %8s %-11s %-8s %6s %12s %14s %10s %6s  %s\n", "size", "vertices", "integrator", "solver",
+              "subst", "ms/step", "ms/step/1k v", "lin it/st", "finite", "top stages");
+  std::vector<Result> results;
+  for (const auto& config : configs) {
+    Result r;
+    try {
+      r = runConfiguration(config, options, sceneFile);
+    } catch (const InputError& e) {
+      std::cerr << "weft: " << e.what() << "\n";
+      return kExitBadInput;
+    }
+    std::printf("%6d %8d %-11s %-8s %6d %12.3f %14.4f %10.1f %6s  %s\n", config.size, r.vertices,
+                config.integrator.c_str(), config.solver.c_str(), r.substeps, r.medianMsPerStep,
+                1000.0 * r.medianMsPerStep / std::max(1, r.vertices), r.linearIterationsPerStep,
+                r.finite ? "yes" : "NO", sharesText(r, ", ", 3).c_str());
+    std::fflush(stdout);
+    results.push_back(std::move(r));
+  }
+
+  try {
+    const fs::path csvFile(options.csv);
+    if (csvFile.has_parent_path()) fs::create_directories(csvFile.parent_path());
+    writeFileAtomically(csvFile, csvText(results, options, sceneFile));
+    std::printf("wrote %s\n", csvFile.string().c_str());
+  } catch (const std::exception& e) {
+    std::cerr << "weft: " << e.what() << "\n";
+    return kExitFailure;
+  }
+  const bool allFinite = std::all_of(results.begin(), results.end(), [](const Result& r) { return r.finite; });
+  return allFinite ? kExitOk : kExitNonFinite;
+}
+
+}  // namespace
+
+Command addBenchCommand(CLI::App& app) {
+  auto options = std::make_shared<BenchOptions>();
+  CLI::App* cli = app.add_subcommand("bench", "Time the hanging sheet over sizes, integrators and linear solvers");
+  cli->add_option("--sizes", options->sizes, "Grid resolutions (vertices per side), comma-separated")
+      ->delimiter(',')
+      ->check(CLI::Range(2, 4096))
+      ->capture_default_str();
+  cli->add_option("--integrators", options->integrators, "Any of lbe, newton, symplectic, comma-separated")
+      ->delimiter(',')
+      ->check(CLI::IsMember({"lbe", "newton", "symplectic"}))
+      ->capture_default_str();
+  cli->add_option("--solvers", options->solvers, "Linear solvers for lbe and newton: cg, cholmod, comma-separated")
+      ->delimiter(',')
+      ->check(CLI::IsMember({"cg", "cholmod"}))
+      ->capture_default_str();
+  cli->add_option("--steps", options->steps, "Timed steps per repeat")->check(CLI::PositiveNumber)->capture_default_str();
+  cli->add_option("--warmup", options->warmup, "Untimed steps before timing")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  cli->add_option("--repeats", options->repeats, "Repeats (the median is reported)")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  cli->add_option("--threads", options->threads, "Worker threads")->check(CLI::PositiveNumber)->capture_default_str();
+  cli->add_option("--symplectic-substeps", options->symplecticSubsteps,
+                  "Substeps per 1/60 s step for symplectic Euler (default: estimated for stability)")
+      ->check(CLI::PositiveNumber);
+  cli->add_option("--csv", options->csv, "CSV output file")->capture_default_str();
+  cli->add_option("--scene", options->scene, "Scene to benchmark (its first cloth must be a grid)");
+  return {cli, [options] { return runBench(*options); }};
+}
+
+}  // namespace weft::app

@@ -1,0 +1,53 @@
+#include "frame_obj_writer.h"
+
+#include <cstdio>
+#include <vector>
+
+namespace weft::app {
+
+namespace {
+template <typename... Args>
+void appendLine(std::string& out, const char* format, Args... args) {
+  char line[160];
+  const int n = std::snprintf(line, sizeof line, format, args...);
+  out.append(line, static_cast<std::size_t>(n));
+}
+}  // namespace
+
+std::string clothToObj(const ClothMesh& mesh, const std::string& comment) {
+  std::string out = "# " + comment + "\n";
+  out.reserve(out.size() + static_cast<std::size_t>(mesh.vertexCount()) * 40 +
+              static_cast<std::size_t>(mesh.triangleCount()) * 120);
+  for (const Vec3& p : mesh.x) appendLine(out, "v %.9g %.9g %.9g\n", p.x(), p.y(), p.z());
+  for (const Triangle& t : mesh.tris) {
+    for (const Vec2& uv : t.rest) appendLine(out, "vt %.9g %.9g\n", uv.x(), uv.y());
+  }
+  int corner = 1;  // OBJ indices start at 1
+  for (const Triangle& t : mesh.tris) {
+    appendLine(out, "f %d/%d %d/%d %d/%d\n", t.v[0] + 1, corner, t.v[1] + 1, corner + 1, t.v[2] + 1, corner + 2);
+    corner += 3;
+  }
+  return out;
+}
+
+std::filesystem::path frameObjPath(const std::filesystem::path& framesDir, int frame, const std::string& clothName,
+                                   bool severalCloths) {
+  char number[32];
+  std::snprintf(number, sizeof number, "%04d", frame);
+  std::string name = std::string("frame_") + number;
+  if (severalCloths) name += "_" + clothName;
+  return framesDir / (name + ".obj");
+}
+
+void removeOldFrames(const std::filesystem::path& framesDir) {
+  std::error_code ec;
+  if (!std::filesystem::is_directory(framesDir, ec)) return;
+  std::vector<std::filesystem::path> old;
+  for (const auto& entry : std::filesystem::directory_iterator(framesDir, ec)) {
+    const std::string name = entry.path().filename().string();
+    if (name.rfind("frame_", 0) == 0 && entry.path().extension() == ".obj") old.push_back(entry.path());
+  }
+  for (const auto& file : old) std::filesystem::remove(file, ec);
+}
+
+}  // namespace weft::app

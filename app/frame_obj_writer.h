@@ -1,0 +1,22 @@
+#pragma once
+// `weft run --obj`: one OBJ file per cloth per frame, for viewing a run in any 3-D tool.
+#include <filesystem>
+#include <string>
+
+#include "mesh/cloth_mesh.h"
+
+namespace weft::app {
+
+// The mesh as OBJ text: `v` world positions, `vt` the rest (material-space) coordinates of every
+// triangle corner in metres, `f` triangles. Per-corner UVs keep torn seams visible as seams.
+std::string clothToObj(const ClothMesh& mesh, const std::string& comment);
+
+// frames/frame_0007.obj for a single cloth, frames/frame_0007_<cloth>.obj when there are several.
+std::filesystem::path frameObjPath(const std::filesystem::path& framesDir, int frame, const std::string& clothName,
+                                   bool severalCloths);
+
+// Removes frame_*.obj files left by an earlier run into the same folder, so that the folder
+// never mixes frames of two runs.
+void removeOldFrames(const std::filesystem::path& framesDir);
+
+}  // namespace weft::app

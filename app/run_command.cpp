@@ -1,0 +1,181 @@
+// `weft run SCENE`: simulate a scene headless and write metrics.json (and OBJ frames with --obj).
+//
+// Order matters for what a failure leaves behind: everything that can be wrong with the input
+// (scene, presets, meshes, pins) is checked by loading the scene and building the World before
+// the output folder is created, so bad input never leaves an empty or stale-looking result.
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "atomic_file.h"
+#include "command.h"
+#include "frame_obj_writer.h"
+#include "metrics_writer.h"
+#include "progress_bar.h"
+#include "scene/scene_json.h"
+#include "sim/world.h"
+#include "util/input_error.h"
+
+namespace weft::app {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct RunOptions {
+  std::string scene;
+  int frames = 0;                  // only used when --frames was given
+  int threads = 1;                 // only used when --threads was given
+  std::string out;                 // default: out/<scene name>
+  bool obj = false;
+  bool quiet = false;
+  std::vector<std::string> overrides;
+  CLI::Option* framesOption = nullptr;
+  CLI::Option* threadsOption = nullptr;
+};
+
+// The NaN check is done on the state itself after every frame rather than through
+// World::metrics(), which also evaluates energies and would cost a force evaluation per frame.
+bool stateIsFinite(const World& world) {
+  for (int i = 0; i < world.clothCount(); ++i) {
+    const ClothMesh& mesh = world.cloth(i);
+    for (std::size_t k = 0; k < mesh.x.size(); ++k) {
+      if (!mesh.x[k].allFinite() || !mesh.v[k].allFinite()) return false;
+    }
+  }
+  return true;
+}
+
+void writeFrames(const World& world, const fs::path& framesDir, int frame) {
+  const bool several = world.clothCount() > 1;
+  for (int i = 0; i < world.clothCount(); ++i) {
+    const std::string& name = world.scene().cloths[static_cast<std::size_t>(i)].name;
+    char comment[160];
+    std::snprintf(comment, sizeof comment, "weft: scene %s, cloth %s, frame %d, t = %.6f s",
+                  world.scene().name.c_str(), name.c_str(), frame, world.time());
+    writeFileAtomically(frameObjPath(framesDir, frame, name, several), clothToObj(world.cloth(i), comment));
+  }
+}
+
+void printStageShares(const StageProfile& profile) {
+  double total = 0.0;
+  for (double ms : profile.totalMs) total += ms;
+  std::printf("%-24s %12s %8s\n", "stage", "total ms", "share");
+  for (std::size_t k = 0; k < profile.names.size(); ++k) {
+    const double share = total > 0.0 ? 100.0 * profile.totalMs[k] / total : 0.0;
+    std::printf("%-24s %12.2f %7.1f%%\n", profile.names[k].c_str(), profile.totalMs[k], share);
+  }
+}
+
+int runScene(const RunOptions& options) {
+  // --frames and --threads are shorthands for overrides, applied after the user's --set so that
+  // the explicit flag wins.
+  std::vector<std::string> overrides = options.overrides;
+  if (options.framesOption->count() > 0) overrides.push_back("output.frames=" + std::to_string(options.frames));
+  if (options.threadsOption->count() > 0) overrides.push_back("solver.threads=" + std::to_string(options.threads));
+
+  std::optional<Scene> scene;
+  std::unique_ptr<World> world;
+  try {
+    scene = loadScene(options.scene, overrides);
+    world = std::make_unique<World>(*scene);
+  } catch (const InputError& e) {
+    std::cerr << "weft: " << e.what() << "\n";
+    return kExitBadInput;
+  }
+
+  const fs::path outDir = options.out.empty() ? fs::path("out") / scene->name : fs::path(options.out);
+  const fs::path framesDir = outDir / "frames";
+  const int frames = scene->output.frames;
+  const int stepsPerFrameCount = stepsPerFrame(*scene);
+  const bool talk = !options.quiet;
+
+  if (talk) {
+    std::printf("scene %s: %d frames x %d steps of %g s, %d substep(s), %d thread(s)\n", scene->name.c_str(), frames,
+                stepsPerFrameCount, scene->solver.dt, scene->solver.substeps, scene->solver.threads);
+    std::printf("stages:");
+    for (const auto& stage : world->stagesRun()) std::printf(" %s", stage.c_str());
+    std::printf("\n");
+    std::fflush(stdout);
+  }
+
+  try {
+    fs::create_directories(outDir);
+    if (options.obj) {
+      fs::create_directories(framesDir);
+      removeOldFrames(framesDir);
+      writeFrames(*world, framesDir, 0);
+    }
+  } catch (const std::exception& e) {
+    std::cerr << "weft: cannot write to " << outDir.string() << ": " << e.what() << "\n";
+    return kExitFailure;
+  }
+
+  ProgressBar progress(frames, "frames", talk && ProgressBar::stderrIsTerminal());
+  double wallSeconds = 0.0;
+  bool finite = stateIsFinite(*world);
+  int framesDone = 0;
+  try {
+    for (int frame = 1; frame <= frames && finite; ++frame) {
+      const auto start = std::chrono::steady_clock::now();
+      for (int s = 0; s < stepsPerFrameCount; ++s) world->step();
+      wallSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      // A non-finite state only gets worse; stop, but still report what happened.
+      finite = stateIsFinite(*world);
+      if (finite) {
+        framesDone = frame;
+        if (options.obj) writeFrames(*world, framesDir, frame);
+      }
+      progress.update(frame);
+    }
+    progress.finish();
+
+    const fs::path metricsFile = outDir / "metrics.json";
+    writeFileAtomically(metricsFile, runMetrics(*world, wallSeconds).dump(2) + "\n");
+
+    if (talk) {
+      printStageShares(world->profile());
+      std::printf("wrote %s\n", metricsFile.string().c_str());
+      if (options.obj) std::printf("wrote %d frame(s) to %s\n", framesDone + 1, framesDir.string().c_str());
+    }
+  } catch (const std::exception& e) {
+    progress.finish();
+    std::cerr << "weft: " << e.what() << "\n";
+    return kExitFailure;
+  }
+
+  if (!finite) {
+    std::cerr << "weft: the simulation became non-finite after frame " << framesDone << " (t = " << world->time()
+              << " s); metrics were written with \"finite\": false\n";
+    return kExitNonFinite;
+  }
+  return kExitOk;
+}
+
+}  // namespace
+
+Command addRunCommand(CLI::App& app) {
+  auto options = std::make_shared<RunOptions>();
+  CLI::App* cli = app.add_subcommand("run", "Simulate a scene headless; write metrics.json (and OBJ frames)");
+  cli->add_option("scene", options->scene, "Scene file (JSON), e.g. presets/scenes/hanging-sheet.json")->required();
+  options->framesOption =
+      cli->add_option("--frames", options->frames, "Frames to simulate (same as --set output.frames=N)")
+          ->check(CLI::NonNegativeNumber);
+  cli->add_option("--out", options->out, "Output folder (default: out/<scene name>)");
+  cli->add_flag("--obj", options->obj, "Also write frames/frame_NNNN.obj for every frame (frame 0 = start)");
+  cli->add_option("--set", options->overrides, "Override a scene value, e.g. --set solver.dt=0.005 (repeatable)")
+      ->type_name("PATH=VALUE")
+      ->allow_extra_args(false);
+  options->threadsOption =
+      cli->add_option("--threads", options->threads, "Worker threads (same as --set solver.threads=N)")
+          ->check(CLI::PositiveNumber);
+  cli->add_flag("--quiet,-q", options->quiet, "Print nothing but errors");
+  return {cli, [options] { return runScene(*options); }};
+}
+
+}  // namespace weft::app

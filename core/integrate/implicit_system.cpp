@@ -1,0 +1,31 @@
+#include "integrate/implicit_system.h"
+
+#include "sim/cloth.h"
+#include "sim/world.h"
+
+namespace weft {
+
+void ImplicitSystem::ensurePattern(const Cloth& cloth) {
+  if (!patternStale && matrix.vertexCount() == cloth.mesh.vertexCount()) return;
+  matrix.setPattern(cloth.mesh.vertexCount(), coupledVertexPairs(cloth));
+  patternStale = false;
+}
+
+bool ImplicitSystem::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x, StageProfile& profile, SolverStats& stats) {
+  StageTimer timer(profile, "linear_solve");
+  Eigen::VectorXd guess = x;
+  const LinearSolveResult result = solver->solve(matrix, b, x);
+  stats.linearIterations += result.iterations;
+  stats.lastLinearResidual = result.relativeResidual;
+  if (std::isfinite(result.relativeResidual))
+    stats.maxLinearResidual = std::max(stats.maxLinearResidual, result.relativeResidual);
+  const bool finite = x.allFinite();
+  if (!result.converged) ++stats.linearSolveFailures;
+  if (!finite) {
+    x = guess;
+    return false;
+  }
+  return true;
+}
+
+}  // namespace weft

@@ -1,0 +1,18 @@
+#include "integrate/integrator.h"
+
+#include "integrate/linearized_backward_euler.h"
+#include "integrate/newton.h"
+#include "integrate/symplectic_euler.h"
+
+namespace weft {
+
+std::unique_ptr<Integrator> makeIntegrator(const SolverSpec& spec) {
+  switch (spec.integrator) {
+    case IntegratorKind::Newton: return std::make_unique<NewtonIntegrator>(spec);
+    case IntegratorKind::SymplecticEuler: return std::make_unique<SymplecticEuler>();
+    case IntegratorKind::LinearizedBackwardEuler: break;
+  }
+  return std::make_unique<LinearizedBackwardEuler>(spec);
+}
+
+}  // namespace weft

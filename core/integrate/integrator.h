@@ -1,0 +1,43 @@
+#pragma once
+// Time integrators: each advances one cloth by one (sub)step.
+//
+//  - LinearizedBackwardEuler: the thesis' Eq. 2.47, (M - h^2 K) v+ = M v + h f(x), one linear
+//    solve per step (Baraff & Witkin 1998). The default.
+//  - Newton: backward Euler solved to a tolerance by Newton's method on the incremental potential,
+//    with a backtracking line search. The accurate option.
+//  - SymplecticEuler: v += h M^-1 f(x), x += h v. The explicit baseline (needs small steps).
+#include <memory>
+#include <vector>
+
+#include "scene/scene.h"
+#include "sim/stage_profile.h"
+
+namespace weft {
+
+struct Cloth;
+struct SolverStats;
+
+struct StepInputs {
+  double time = 0.0;  // time at the start of the step (s)
+  double dt = 0.0;    // step length (s)
+  Vec3 gravity = Vec3::Zero();
+  const WindSpec* wind = nullptr;  // null: no wind stage
+  DampingSpec damping;
+  bool bending = true;
+  int threads = 1;
+};
+
+class Integrator {
+ public:
+  virtual ~Integrator() = default;
+  virtual void advance(Cloth& cloth, const StepInputs& inputs, StageProfile& profile, SolverStats& stats) = 0;
+  // Called after a topology change: the next step rebuilds the matrix pattern.
+  virtual void topologyChanged() {}
+};
+
+std::unique_ptr<Integrator> makeIntegrator(const SolverSpec& spec);
+
+// Gravity and wind on every vertex (the external forces, constant over a step).
+void externalForces(const Cloth& cloth, const StepInputs& inputs, std::vector<Vec3>& forces, StageProfile& profile);
+
+}  // namespace weft

@@ -1,0 +1,55 @@
+#include "integrate/linearized_backward_euler.h"
+
+#include "sim/cloth.h"
+#include "sim/world.h"
+
+namespace weft {
+
+void LinearizedBackwardEuler::advance(Cloth& cloth, const StepInputs& in, StageProfile& profile, SolverStats& stats) {
+  ClothMesh& mesh = cloth.mesh;
+  const int n = mesh.vertexCount();
+  const double h = in.dt;
+  system_.ensurePattern(cloth);
+  externalForces(cloth, in, system_.externalForce, profile);
+  pinTargets(cloth, in.time + h, system_.pinnedVertices, system_.pinnedTargets, profile);
+
+  system_.matrix.setZero();
+  ElasticOptions options;
+  options.bending = in.bending;
+  options.hessian = HessianMode::Definite;
+  options.threads = in.threads;
+  evaluateElasticForces(cloth, mesh.x, options, system_.elastic, system_.internalForce, &system_.matrix, profile);
+
+  {
+    StageTimer timer(profile, "assemble");
+    // Eq. 2.47 with damping: [(1 + h c_m) M + (h^2 + h beta) H] v+ = M v + h (f_int(x) + f_ext),
+    // where H = -K is the (definite) Hessian of the elastic energy, c_m the mass damping and beta
+    // the stiffness (Rayleigh) damping, both taken implicitly.
+    SystemMatrix::Sparse& A = system_.matrix.matrix();
+    A *= h * h + h * in.damping.stiffness;
+    for (int i = 0; i < n; ++i) system_.matrix.addDiagonal(i, (1.0 + h * in.damping.mass) * mesh.mass[i]);
+    system_.rhs.resize(3 * n);
+    const auto v = flat(mesh.v);
+    const auto fInt = flat(system_.internalForce);
+    const auto fExt = flat(system_.externalForce);
+    for (int i = 0; i < n; ++i)
+      system_.rhs.segment<3>(3 * i) = mesh.mass[i] * v.segment<3>(3 * i) + h * (fInt.segment<3>(3 * i) + fExt.segment<3>(3 * i));
+    // Pinned vertices move at the velocity that takes them to their scripted target.
+    system_.known.setZero(3 * n);
+    for (size_t k = 0; k < system_.pinnedVertices.size(); ++k) {
+      const int p = system_.pinnedVertices[k];
+      system_.known.segment<3>(3 * p) = (system_.pinnedTargets[k] - mesh.x[p]) / h;
+    }
+    system_.matrix.constrainVertices(system_.pinnedVertices, system_.known, system_.rhs);
+  }
+
+  system_.solution = flat(mesh.v);  // warm start
+  system_.solve(system_.rhs, system_.solution, profile, stats);
+
+  StageTimer timer(profile, "update");
+  flat(mesh.v) = system_.solution;
+  for (int i = 0; i < n; ++i) mesh.x[i] += h * mesh.v[i];
+  for (size_t k = 0; k < system_.pinnedVertices.size(); ++k) mesh.x[system_.pinnedVertices[k]] = system_.pinnedTargets[k];
+}
+
+}  // namespace weft

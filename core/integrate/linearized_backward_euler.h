@@ -1,0 +1,18 @@
+#pragma once
+#include "integrate/implicit_system.h"
+#include "integrate/integrator.h"
+
+namespace weft {
+
+// The thesis' linearized backward Euler step (Eq. 2.47): one linear solve per step.
+class LinearizedBackwardEuler final : public Integrator {
+ public:
+  explicit LinearizedBackwardEuler(const SolverSpec& spec) : system_(spec) {}
+  void advance(Cloth& cloth, const StepInputs& inputs, StageProfile& profile, SolverStats& stats) override;
+  void topologyChanged() override { system_.patternStale = true; }
+
+ private:
+  ImplicitSystem system_;
+};
+
+}  // namespace weft

@@ -1,0 +1,124 @@
+#include "integrate/newton.h"
+
+#include <cmath>
+
+#include "sim/cloth.h"
+#include "sim/world.h"
+
+namespace weft {
+
+double NewtonIntegrator::potential(const Cloth& cloth, const std::vector<Vec3>& x, const StepInputs& in,
+                                   StageProfile& profile) {
+  ElasticOptions options;
+  options.bending = in.bending;
+  options.threads = in.threads;
+  const ElasticSummary elastic =
+      evaluateElasticForces(cloth, x, options, system_.elastic, system_.internalForce, nullptr, profile);
+  const double h = in.dt;
+  double inertia = 0.0, external = 0.0, damping = 0.0;
+  for (size_t i = 0; i < x.size(); ++i) {
+    const Vec3 d = x[i] - inertialTarget_[i];
+    inertia += cloth.mesh.mass[i] * d.squaredNorm();
+    external += system_.externalForce[i].dot(x[i]);
+    damping += in.damping.mass * cloth.mesh.mass[i] * (x[i] - x0_[i]).squaredNorm();
+  }
+  if (in.damping.stiffness > 0.0) {
+    const Eigen::VectorXd dx = flat(x) - flat(x0_);
+    damping += dx.dot(dampingHessian_ * dx);
+  }
+  return inertia / (2.0 * h * h) + elastic.membraneEnergy + elastic.bendingEnergy - external + damping / (2.0 * h);
+}
+
+void NewtonIntegrator::advance(Cloth& cloth, const StepInputs& in, StageProfile& profile, SolverStats& stats) {
+  ClothMesh& mesh = cloth.mesh;
+  const int n = mesh.vertexCount();
+  const double h = in.dt;
+  system_.ensurePattern(cloth);
+  externalForces(cloth, in, system_.externalForce, profile);
+  pinTargets(cloth, in.time + h, system_.pinnedVertices, system_.pinnedTargets, profile);
+
+  x0_ = mesh.x;
+  inertialTarget_.resize(n);
+  for (int i = 0; i < n; ++i) inertialTarget_[i] = mesh.x[i] + h * mesh.v[i];
+  std::vector<Vec3> x = inertialTarget_;  // start from the inertial prediction
+  for (size_t k = 0; k < system_.pinnedVertices.size(); ++k) x[system_.pinnedVertices[k]] = system_.pinnedTargets[k];
+
+  ElasticOptions options;
+  options.bending = in.bending;
+  options.hessian = HessianMode::Definite;
+  options.threads = in.threads;
+  if (in.damping.stiffness > 0.0) {
+    system_.matrix.setZero();
+    evaluateElasticForces(cloth, x0_, options, system_.elastic, system_.internalForce, &system_.matrix, profile);
+    dampingHessian_ = system_.matrix.matrix() * in.damping.stiffness;
+  }
+
+  double lastChange = 0.0;
+  int iteration = 0;
+  for (; iteration < maxIterations_; ++iteration) {
+    system_.matrix.setZero();
+    const ElasticSummary elastic =
+        evaluateElasticForces(cloth, x, options, system_.elastic, system_.internalForce, &system_.matrix, profile);
+    double phi = 0.0;
+    {
+      StageTimer timer(profile, "assemble");
+      // Gradient of Phi and its Hessian M/h^2 + H(x) + D/h.
+      gradient_.resize(3 * n);
+      double inertia = 0.0, external = 0.0, damping = 0.0;
+      for (int i = 0; i < n; ++i) {
+        const Vec3 d = x[i] - inertialTarget_[i];
+        const Vec3 moved = x[i] - x0_[i];
+        gradient_.segment<3>(3 * i) = mesh.mass[i] * d / (h * h) - system_.internalForce[i] - system_.externalForce[i] +
+                                      in.damping.mass * mesh.mass[i] * moved / h;
+        inertia += mesh.mass[i] * d.squaredNorm();
+        external += system_.externalForce[i].dot(x[i]);
+        damping += in.damping.mass * mesh.mass[i] * moved.squaredNorm();
+      }
+      if (in.damping.stiffness > 0.0) {
+        const Eigen::VectorXd dx = flat(x) - flat(x0_);
+        const Eigen::VectorXd Ddx = dampingHessian_ * dx;
+        gradient_ += Ddx / h;
+        damping += dx.dot(Ddx);
+        system_.matrix.matrix() += dampingHessian_ / h;
+      }
+      phi = inertia / (2.0 * h * h) + elastic.membraneEnergy + elastic.bendingEnergy - external + damping / (2.0 * h);
+      for (int i = 0; i < n; ++i) system_.matrix.addDiagonal(i, mesh.mass[i] * (1.0 / (h * h) + in.damping.mass / h));
+      system_.rhs = -gradient_;
+      system_.known.setZero(3 * n);  // pinned vertices already sit at their targets
+      system_.matrix.constrainVertices(system_.pinnedVertices, system_.known, system_.rhs);
+    }
+    step_.setZero(3 * n);
+    if (!system_.solve(system_.rhs, step_, profile, stats)) break;
+
+    // Backtracking line search on Phi (Armijo condition).
+    const double slope = -system_.rhs.dot(step_);  // gradient . step over the free unknowns
+    double alpha = 1.0;
+    trial_.resize(n);
+    bool accepted = false;
+    for (int halving = 0; halving < 12; ++halving, alpha *= 0.5) {
+      for (int i = 0; i < n; ++i) trial_[i] = x[i] + alpha * step_.segment<3>(3 * i);
+      const double trialPhi = potential(cloth, trial_, in, profile);
+      if (std::isfinite(trialPhi) && trialPhi <= phi + 1e-4 * alpha * slope) {
+        accepted = true;
+        break;
+      }
+    }
+    if (!accepted) break;  // no decrease along the step: x is as good as this Newton step gets
+    x.swap(trial_);
+    lastChange = alpha * step_.cwiseAbs().maxCoeff() / h;
+    if (lastChange < tolerance_) {
+      ++iteration;
+      break;
+    }
+  }
+  stats.newtonIterations += iteration;
+  stats.lastNewtonResidual = lastChange;
+
+  StageTimer timer(profile, "update");
+  for (int i = 0; i < n; ++i) {
+    mesh.v[i] = (x[i] - x0_[i]) / h;
+    mesh.x[i] = x[i];
+  }
+}
+
+}  // namespace weft

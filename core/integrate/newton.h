@@ -1,0 +1,30 @@
+#pragma once
+#include "integrate/implicit_system.h"
+#include "integrate/integrator.h"
+
+namespace weft {
+
+// Backward Euler solved by Newton's method: minimizes the incremental potential
+//   Phi(x) = 1/(2h^2) |x - x0 - h v0|_M^2 + E(x) - f_ext.x + 1/(2h) |x - x0|_D^2,
+// whose stationary point is M (v+ - v0)/h = f_int(x+) + f_ext - D v+ with v+ = (x - x0)/h and
+// the damping matrix D = c_m M + beta H(x0). Each iteration solves with the definite Hessian and
+// backtracks along the step until Phi decreases enough (Armijo), so it converges from any start.
+class NewtonIntegrator final : public Integrator {
+ public:
+  explicit NewtonIntegrator(const SolverSpec& spec)
+      : system_(spec), maxIterations_(spec.newtonMaxIterations), tolerance_(spec.newtonTolerance) {}
+  void advance(Cloth& cloth, const StepInputs& inputs, StageProfile& profile, SolverStats& stats) override;
+  void topologyChanged() override { system_.patternStale = true; }
+
+ private:
+  double potential(const Cloth& cloth, const std::vector<Vec3>& x, const StepInputs& in, StageProfile& profile);
+
+  ImplicitSystem system_;
+  int maxIterations_;
+  double tolerance_;
+  std::vector<Vec3> x0_, inertialTarget_, trial_;
+  SystemMatrix::Sparse dampingHessian_;  // beta * H(x0) when stiffness damping is on
+  Eigen::VectorXd gradient_, step_;
+};
+
+}  // namespace weft

@@ -1,0 +1,91 @@
+#include "integrate/system_matrix.h"
+
+#include <algorithm>
+#include <cassert>
+
+namespace weft {
+
+void SystemMatrix::setPattern(int vertexCount, const std::vector<std::pair<int, int>>& coupledPairs) {
+  std::vector<Eigen::Triplet<double, int>> entries;
+  entries.reserve(9 * (vertexCount + 2 * coupledPairs.size()));
+  auto addBlockEntries = [&](int i, int j) {
+    for (int c = 0; c < 3; ++c)
+      for (int r = 0; r < 3; ++r) entries.emplace_back(3 * i + r, 3 * j + c, 0.0);
+  };
+  for (int i = 0; i < vertexCount; ++i) addBlockEntries(i, i);
+  for (const auto& [i, j] : coupledPairs) {
+    if (i == j) continue;
+    addBlockEntries(i, j);
+    addBlockEntries(j, i);
+  }
+  matrix_.resize(3 * vertexCount, 3 * vertexCount);
+  // Duplicated pairs collapse into one entry (summing zeros).
+  matrix_.setFromTriplets(entries.begin(), entries.end());
+  matrix_.makeCompressed();
+  vertexCount_ = vertexCount;
+  ++patternVersion_;
+}
+
+void SystemMatrix::setZero() { std::fill_n(matrix_.valuePtr(), matrix_.nonZeros(), 0.0); }
+
+int SystemMatrix::blockOffset(int i, int j, int column) const {
+  const int col = 3 * j + column;
+  const int* rows = matrix_.innerIndexPtr();
+  const int begin = matrix_.outerIndexPtr()[col];
+  const int end = matrix_.outerIndexPtr()[col + 1];
+  const int* found = std::lower_bound(rows + begin, rows + end, 3 * i);
+  assert(found != rows + end && *found == 3 * i && "block not in the pattern");
+  return static_cast<int>(found - rows);
+}
+
+void SystemMatrix::addBlock(int i, int j, const Mat3& m) {
+  double* values = matrix_.valuePtr();
+  for (int c = 0; c < 3; ++c) {
+    const int offset = blockOffset(i, j, c);
+    for (int r = 0; r < 3; ++r) values[offset + r] += m(r, c);
+  }
+}
+
+void SystemMatrix::addDiagonal(int i, double value) {
+  double* values = matrix_.valuePtr();
+  for (int c = 0; c < 3; ++c) values[blockOffset(i, i, c) + c] += value;
+}
+
+void SystemMatrix::constrainVertices(const std::vector<int>& vertices, const Eigen::VectorXd& knownValues,
+                                     Eigen::VectorXd& rhs) {
+  if (vertices.empty()) return;
+  std::vector<char> constrained(vertexCount_, 0);
+  for (int p : vertices) constrained[p] = 1;
+  double* values = matrix_.valuePtr();
+  const int* rows = matrix_.innerIndexPtr();
+  const int* outer = matrix_.outerIndexPtr();
+  // Column pass: move known columns to the right-hand side, then clear them.
+  for (int p : vertices) {
+    for (int c = 0; c < 3; ++c) {
+      const int col = 3 * p + c;
+      for (int k = outer[col]; k < outer[col + 1]; ++k) {
+        const int row = rows[k];
+        if (!constrained[row / 3]) rhs[row] -= values[k] * knownValues[col];
+        values[k] = row == col ? 1.0 : 0.0;
+      }
+    }
+  }
+  // Row pass: clear the constrained rows in the other columns (the pattern is symmetric, so the
+  // entries of row p are found in the columns coupled with p).
+  for (int p : vertices) {
+    for (int c = 0; c < 3; ++c) {
+      const int col = 3 * p + c;
+      for (int k = outer[col]; k < outer[col + 1]; ++k) {
+        const int otherColumn = rows[k];
+        if (constrained[otherColumn / 3]) continue;
+        const int* begin = rows + outer[otherColumn];
+        const int* end = rows + outer[otherColumn + 1];
+        const int* found = std::lower_bound(begin, end, col);
+        if (found != end && *found == col) values[found - rows] = 0.0;
+      }
+    }
+    for (int c = 0; c < 3; ++c) rhs[3 * p + c] = knownValues[3 * p + c];
+  }
+}
+
+}  // namespace weft

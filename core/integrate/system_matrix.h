@@ -1,0 +1,46 @@
+#pragma once
+// The 3n x 3n system matrix of a cloth, stored as an Eigen column-major sparse matrix whose
+// pattern (3x3 blocks between vertices that share a triangle or a bending hinge) is built once
+// per topology and then only refilled: no allocation per step.
+#include <utility>
+#include <vector>
+
+#include <Eigen/SparseCore>
+
+#include "util/types.h"
+
+namespace weft {
+
+class SystemMatrix {
+ public:
+  using Sparse = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
+
+  // Builds the pattern: diagonal blocks for every vertex plus both (i,j) and (j,i) blocks for each
+  // coupled pair. Full symmetric storage (CG reads both triangles, CHOLMOD the lower one).
+  void setPattern(int vertexCount, const std::vector<std::pair<int, int>>& coupledPairs);
+  bool hasPattern() const { return vertexCount_ > 0; }
+  int vertexCount() const { return vertexCount_; }
+  // Increases every time the pattern changes (solvers redo their symbolic analysis then).
+  int patternVersion() const { return patternVersion_; }
+
+  void setZero();
+  // Adds m to block (i, j). The block must be in the pattern.
+  void addBlock(int i, int j, const Mat3& m);
+  void addDiagonal(int i, double value);  // adds value * I to block (i, i)
+  // Offset into valuePtr() of entry (3i + r, 3j + c) is blockOffset(i, j, c) + r.
+  int blockOffset(int i, int j, int column) const;
+
+  // Replaces the rows and columns of the given vertices by identity rows, moving the known
+  // values y of those unknowns to the right-hand side: b -= A[:, p] y_p, then b_p = y_p.
+  void constrainVertices(const std::vector<int>& vertices, const Eigen::VectorXd& knownValues, Eigen::VectorXd& rhs);
+
+  const Sparse& matrix() const { return matrix_; }
+  Sparse& matrix() { return matrix_; }
+
+ private:
+  Sparse matrix_;
+  int vertexCount_ = 0;
+  int patternVersion_ = 0;
+};
+
+}  // namespace weft

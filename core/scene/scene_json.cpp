@@ -1,0 +1,660 @@
+#include "scene/scene_json.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <limits>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "material/material.h"
+#include "mesh/grid.h"
+#include "mesh/obj_import.h"
+#include "util/input_error.h"
+
+namespace weft {
+namespace {
+
+using nlohmann::json;
+namespace fs = std::filesystem;
+
+// ---------------------------------------------------------------------------------------------
+// Strict field reading. Every value is read through a FieldReader, which knows the file and the
+// JSON pointer of the object it reads, so each message can say exactly which field is wrong and
+// what was expected instead.
+
+// RFC 6901: '~' and '/' inside a key are escaped so the pointer can be followed back.
+std::string childPointer(const std::string& parent, const std::string& key) {
+  std::string escaped;
+  for (char c : key) {
+    if (c == '~') escaped += "~0";
+    else if (c == '/') escaped += "~1";
+    else escaped += c;
+  }
+  return parent + "/" + escaped;
+}
+
+std::string childPointer(const std::string& parent, std::size_t index) {
+  return parent + "/" + std::to_string(index);
+}
+
+// "got -1", "got string \"NaN\"": the value as written, with its type when it is not a number,
+// shortened so that a whole object pasted in the wrong place does not flood the terminal.
+std::string got(const json& value) {
+  std::string text = value.dump();
+  if (text.size() > 60) text = text.substr(0, 57) + "...";
+  if (value.is_number()) return "got " + text;
+  return std::string("got ") + value.type_name() + " " + text;
+}
+
+std::string joinKeys(const std::vector<std::string>& keys) {
+  std::string out;
+  for (const auto& k : keys) out += (out.empty() ? "" : ", ") + k;
+  return out;
+}
+
+enum class Bound {
+  Finite,        // any finite number
+  Positive,      // > 0
+  NonNegative,   // >= 0
+  UnitInterval,  // in [0, 1]
+};
+
+bool satisfies(double x, Bound bound) {
+  if (!std::isfinite(x)) return false;
+  switch (bound) {
+    case Bound::Finite: return true;
+    case Bound::Positive: return x > 0.0;
+    case Bound::NonNegative: return x >= 0.0;
+    case Bound::UnitInterval: return x >= 0.0 && x <= 1.0;
+  }
+  return false;
+}
+
+const char* expectation(Bound bound) {
+  switch (bound) {
+    case Bound::Finite: return "must be a finite number";
+    case Bound::Positive: return "must be a positive finite number";
+    case Bound::NonNegative: return "must be a finite number >= 0";
+    case Bound::UnitInterval: return "must be a number in [0, 1]";
+  }
+  return "";
+}
+
+class FieldReader {
+ public:
+  // Rejects a non-object and any key outside `allowed`, naming the key and listing the allowed ones.
+  FieldReader(const json& object, std::string pointer, const std::string& file, std::vector<std::string> allowed)
+      : object_(object), pointer_(std::move(pointer)), file_(file) {
+    if (!object_.is_object()) fail(pointer_, "must be an object, " + got(object_));
+    for (const auto& item : object_.items()) {
+      if (std::find(allowed.begin(), allowed.end(), item.key()) == allowed.end()) {
+        fail(childPointer(pointer_, item.key()),
+             "unknown key \"" + item.key() + "\"; allowed keys here: " + joinKeys(allowed));
+      }
+    }
+  }
+
+  const std::string& pointer() const { return pointer_; }
+  std::string pointer(const std::string& key) const { return childPointer(pointer_, key); }
+  bool has(const std::string& key) const { return object_.contains(key); }
+  const json& at(const std::string& key) const { return object_.at(key); }
+
+  const json& required(const std::string& key, const std::string& what) const {
+    if (!has(key)) fail(pointer(key), "missing; expected " + what);
+    return at(key);
+  }
+
+  [[noreturn]] void fail(const std::string& pointer, const std::string& message) const {
+    throw InputError(file_, pointer, message);
+  }
+
+  double number(const std::string& key, double fallback, Bound bound) const {
+    if (!has(key)) return fallback;
+    return numberValue(at(key), pointer(key), bound);
+  }
+
+  double numberValue(const json& value, const std::string& at, Bound bound) const {
+    if (!value.is_number()) fail(at, std::string(expectation(bound)) + ", " + got(value));
+    const double x = value.get<double>();
+    if (!satisfies(x, bound)) fail(at, std::string(expectation(bound)) + ", " + got(value));
+    return x;
+  }
+
+  int integer(const std::string& key, int fallback, int minimum) const {
+    if (!has(key)) return fallback;
+    return integerValue(at(key), pointer(key), minimum);
+  }
+
+  int integerValue(const json& value, const std::string& at, int minimum) const {
+    const std::string expected = "must be an integer >= " + std::to_string(minimum);
+    if (!value.is_number()) fail(at, expected + ", " + got(value));
+    const double x = value.get<double>();
+    // 32.0 is accepted as 32: some tools write every number as a float.
+    if (!std::isfinite(x) || x != std::floor(x) || x < minimum ||
+        x > static_cast<double>(std::numeric_limits<int>::max())) {
+      fail(at, expected + ", " + got(value));
+    }
+    return static_cast<int>(x);
+  }
+
+  bool boolean(const std::string& key, bool fallback) const {
+    if (!has(key)) return fallback;
+    if (!at(key).is_boolean()) fail(pointer(key), "must be true or false, " + got(at(key)));
+    return at(key).get<bool>();
+  }
+
+  std::string string(const std::string& key, const std::string& fallback) const {
+    if (!has(key)) return fallback;
+    return stringValue(at(key), pointer(key));
+  }
+
+  std::string stringValue(const json& value, const std::string& at) const {
+    if (!value.is_string()) fail(at, "must be a string, " + got(value));
+    return value.get<std::string>();
+  }
+
+  const json& array(const std::string& key) const {
+    if (!at(key).is_array()) fail(pointer(key), "must be an array, " + got(at(key)));
+    return at(key);
+  }
+
+  Vec3 vec3(const std::string& key, const Vec3& fallback) const {
+    if (!has(key)) return fallback;
+    return vec3Value(at(key), pointer(key));
+  }
+
+  Vec3 vec3Value(const json& value, const std::string& at) const {
+    const Eigen::VectorXd v = vector(value, at, 3);
+    return Vec3(v[0], v[1], v[2]);
+  }
+
+  Vec2 vec2Value(const json& value, const std::string& at) const {
+    const Eigen::VectorXd v = vector(value, at, 2);
+    return Vec2(v[0], v[1]);
+  }
+
+ private:
+  Eigen::VectorXd vector(const json& value, const std::string& at, int size) const {
+    const std::string expected = "must be an array of " + std::to_string(size) + " finite numbers";
+    if (!value.is_array() || value.size() != static_cast<std::size_t>(size)) fail(at, expected + ", " + got(value));
+    Eigen::VectorXd v(size);
+    for (int i = 0; i < size; ++i) {
+      const json& item = value[static_cast<std::size_t>(i)];
+      if (!item.is_number() || !std::isfinite(item.get<double>())) {
+        fail(childPointer(at, static_cast<std::size_t>(i)), expected + ", " + got(value));
+      }
+      v[i] = item.get<double>();
+    }
+    return v;
+  }
+
+  const json& object_;
+  std::string pointer_;
+  const std::string& file_;
+};
+
+// Names become folder and file names (out/<scene>/, frame_0000_<cloth>.obj), so they are kept
+// to characters that are safe in a path on every system and cannot climb out of the output folder.
+void requireSafeName(const FieldReader& r, const std::string& key, const std::string& name) {
+  const bool safeChars = std::all_of(name.begin(), name.end(), [](char c) {
+    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '-' || c == '_' ||
+           c == '.';
+  });
+  if (name.empty() || !safeChars || name.front() == '.') {
+    r.fail(r.pointer(key), "must be a non-empty name of letters, digits, '-', '_' and '.' (not starting with '.'), got \"" +
+                               name + "\"");
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Sections.
+
+struct Context {
+  std::string file;  // the scene file as given (messages)
+  const SearchPaths& paths;
+};
+
+GridSpec parseGrid(const json& j, const std::string& pointer, const Context& ctx) {
+  const FieldReader r(j, pointer, ctx.file, {"width", "height", "resolution"});
+  GridSpec grid;
+  grid.width = r.number("width", grid.width, Bound::Positive);
+  grid.height = r.number("height", grid.height, Bound::Positive);
+  if (r.has("resolution")) {
+    const json& res = r.at("resolution");
+    const std::string at = r.pointer("resolution");
+    if (!res.is_array() || res.size() != 2) {
+      r.fail(at, "must be [vertices along x, vertices along y], two integers >= 2, " + got(res));
+    }
+    grid.resolutionX = r.integerValue(res[0], childPointer(at, std::size_t{0}), 2);
+    grid.resolutionY = r.integerValue(res[1], childPointer(at, std::size_t{1}), 2);
+  }
+  return grid;
+}
+
+// A relative mesh path is looked up in each asset folder in turn; the first existing file wins.
+fs::path resolveAsset(const std::string& relative, const FieldReader& r, const std::string& key,
+                      const Context& ctx) {
+  const fs::path given(relative);
+  if (given.is_absolute()) {
+    if (fs::is_regular_file(given)) return given;
+    r.fail(r.pointer(key), "file not found: \"" + relative + "\"");
+  }
+  std::string looked;
+  for (const auto& dir : ctx.paths.assetDirs) {
+    const fs::path candidate = dir / given;
+    if (fs::is_regular_file(candidate)) return candidate.lexically_normal();
+    looked += (looked.empty() ? "" : ", ") + dir.string();
+  }
+  r.fail(r.pointer(key), "file not found: \"" + relative + "\" (looked in: " + looked + ")");
+}
+
+ObjSpec parseObj(const json& j, const std::string& pointer, const Context& ctx) {
+  const FieldReader r(j, pointer, ctx.file, {"path", "uv_scale"});
+  ObjSpec obj;
+  const std::string relative = r.stringValue(r.required("path", "the OBJ file's path (a string)"), r.pointer("path"));
+  obj.uvScale = r.number("uv_scale", obj.uvScale, Bound::Positive);
+  obj.path = resolveAsset(relative, r, "path", ctx);
+  return obj;
+}
+
+void parseMesh(const json& j, const std::string& pointer, const Context& ctx, ClothSpec& cloth) {
+  const FieldReader r(j, pointer, ctx.file, {"grid", "obj"});
+  if (r.has("grid") == r.has("obj")) {
+    r.fail(pointer, "needs exactly one of \"grid\" and \"obj\", e.g. {\"grid\": {\"resolution\": [32, 32]}}");
+  }
+  if (r.has("grid")) cloth.grid = parseGrid(r.at("grid"), r.pointer("grid"), ctx);
+  if (r.has("obj")) cloth.obj = parseObj(r.at("obj"), r.pointer("obj"), ctx);
+}
+
+Placement parsePlacement(const json& j, const std::string& pointer, const Context& ctx) {
+  const FieldReader r(j, pointer, ctx.file, {"translate", "rotate_deg"});
+  Placement p;
+  p.translate = r.vec3("translate", p.translate);
+  p.rotateDeg = r.vec3("rotate_deg", p.rotateDeg);
+  return p;
+}
+
+void parseMaterialField(const FieldReader& r, const Context& ctx, ClothSpec& cloth) {
+  const json& value = r.required("material", "a preset name (presets/materials/NAME.json) or a material object");
+  const std::string at = r.pointer("material");
+  if (value.is_object()) {
+    cloth.material = parseMaterial(value, ctx.file, at);
+    cloth.materialName = "inline";
+    return;
+  }
+  if (!value.is_string()) r.fail(at, "must be a preset name or a material object, " + got(value));
+  const std::string name = value.get<std::string>();
+  // loadMaterialPreset names the scene field and lists the available presets when `name` is unknown.
+  cloth.material = loadMaterialPreset(name, ctx.paths.materialDirs, ctx.file, at);
+  cloth.materialName = name;
+}
+
+const std::vector<std::string>& cornerNames() {
+  static const std::vector<std::string> names{"top_left", "top_right", "bottom_left", "bottom_right"};
+  return names;
+}
+
+std::vector<PinKeyframe> parseScript(const json& j, const std::string& pointer, const Context& ctx,
+                                     const FieldReader& parent) {
+  if (!j.is_array()) parent.fail(pointer, "must be an array of {\"t\": seconds, \"offset\": [x, y, z]}, " + got(j));
+  std::vector<PinKeyframe> script;
+  for (std::size_t k = 0; k < j.size(); ++k) {
+    const FieldReader r(j[k], childPointer(pointer, k), ctx.file, {"t", "offset"});
+    PinKeyframe key;
+    key.time = r.numberValue(r.required("t", "the key's time in seconds"), r.pointer("t"), Bound::NonNegative);
+    key.offset = r.vec3Value(r.required("offset", "the offset [x, y, z] in metres"), r.pointer("offset"));
+    if (!script.empty() && key.time <= script.back().time) {
+      r.fail(r.pointer("t"), "keys must be in increasing time order; this key's time " + std::to_string(key.time) +
+                                 " does not come after the previous key's " + std::to_string(script.back().time));
+    }
+    script.push_back(key);
+  }
+  return script;
+}
+
+PinGroup parsePinGroup(const json& j, const std::string& pointer, const Context& ctx) {
+  const FieldReader r(j, pointer, ctx.file, {"corners", "rest_box", "vertices", "script"});
+  const int selectors = int(r.has("corners")) + int(r.has("rest_box")) + int(r.has("vertices"));
+  if (selectors != 1) {
+    r.fail(pointer, "a pin group needs exactly one of \"corners\", \"rest_box\" and \"vertices\", found " +
+                        std::to_string(selectors));
+  }
+  PinGroup pins;
+  if (r.has("corners")) {
+    const json& corners = r.array("corners");
+    if (corners.empty()) r.fail(r.pointer("corners"), "must name at least one corner: " + joinKeys(cornerNames()));
+    for (std::size_t k = 0; k < corners.size(); ++k) {
+      const std::string at = childPointer(r.pointer("corners"), k);
+      const std::string name = r.stringValue(corners[k], at);
+      const auto& known = cornerNames();
+      if (std::find(known.begin(), known.end(), name) == known.end()) {
+        r.fail(at, "unknown corner \"" + name + "\"; expected one of " + joinKeys(known));
+      }
+      pins.corners.push_back(name);
+    }
+  }
+  if (r.has("rest_box")) {
+    const FieldReader box(r.at("rest_box"), r.pointer("rest_box"), ctx.file, {"min", "max"});
+    const Vec2 lo = box.vec2Value(box.required("min", "the box's [x, y] minimum in material space (m)"), box.pointer("min"));
+    const Vec2 hi = box.vec2Value(box.required("max", "the box's [x, y] maximum in material space (m)"), box.pointer("max"));
+    if (lo.x() > hi.x() || lo.y() > hi.y()) {
+      box.fail(box.pointer(), "min must not exceed max in x or y, got min [" + std::to_string(lo.x()) + ", " +
+                                  std::to_string(lo.y()) + "], max [" + std::to_string(hi.x()) + ", " +
+                                  std::to_string(hi.y()) + "]");
+    }
+    pins.restBox = std::make_pair(lo, hi);
+  }
+  if (r.has("vertices")) {
+    const json& ids = r.array("vertices");
+    if (ids.empty()) r.fail(r.pointer("vertices"), "must list at least one vertex id");
+    for (std::size_t k = 0; k < ids.size(); ++k) {
+      pins.vertices.push_back(r.integerValue(ids[k], childPointer(r.pointer("vertices"), k), 0));
+    }
+  }
+  if (r.has("script")) pins.script = parseScript(r.at("script"), r.pointer("script"), ctx, r);
+  return pins;
+}
+
+// Pins are checked against the mesh they will hold, so that a vertex id past the end or a box
+// that misses the cloth is reported at load time instead of silently pinning nothing.
+void checkPinsAgainstMesh(const ClothSpec& cloth, const ClothMesh& mesh, const std::string& pointer,
+                          const Context& ctx) {
+  std::vector<std::vector<Vec2>> rest(static_cast<std::size_t>(mesh.vertexCount()));
+  for (const auto& t : mesh.tris) {
+    for (int k = 0; k < 3; ++k) {
+      if (t.v[k] >= 0 && t.v[k] < mesh.vertexCount()) rest[static_cast<std::size_t>(t.v[k])].push_back(t.rest[k]);
+    }
+  }
+  for (std::size_t g = 0; g < cloth.pins.size(); ++g) {
+    const PinGroup& pins = cloth.pins[g];
+    const std::string at = childPointer(childPointer(pointer, "pins"), g);
+    for (std::size_t k = 0; k < pins.vertices.size(); ++k) {
+      if (pins.vertices[k] >= mesh.vertexCount()) {
+        throw InputError(ctx.file, childPointer(childPointer(at, "vertices"), k),
+                         "vertex id " + std::to_string(pins.vertices[k]) + " is out of range; the mesh has " +
+                             std::to_string(mesh.vertexCount()) + " vertices (ids 0.." +
+                             std::to_string(mesh.vertexCount() - 1) + ")");
+      }
+    }
+    if (pins.restBox) {
+      const auto& [lo, hi] = *pins.restBox;
+      const double slack = 1e-9;  // a box edge drawn exactly on a row of vertices still catches it
+      const bool any = std::any_of(rest.begin(), rest.end(), [&](const std::vector<Vec2>& corners) {
+        return std::any_of(corners.begin(), corners.end(), [&](const Vec2& p) {
+          return p.x() >= lo.x() - slack && p.x() <= hi.x() + slack && p.y() >= lo.y() - slack &&
+                 p.y() <= hi.y() + slack;
+        });
+      });
+      if (!any) {
+        throw InputError(ctx.file, childPointer(at, "rest_box"),
+                         "contains no vertex of the cloth; boxes are in material space (metres), e.g. a 1 m grid "
+                         "spans [0, 1] x [0, 1]");
+      }
+    }
+  }
+}
+
+// Builds the mesh once at load time: a missing UV set or a degenerate triangle in an OBJ file is
+// a problem with this scene, so it is reported against the scene field that names the file.
+ClothMesh buildMeshForChecks(const ClothSpec& cloth, const std::string& pointer, const Context& ctx) {
+  if (cloth.grid) return makeGrid(*cloth.grid);
+  try {
+    return loadObjMesh(*cloth.obj, ctx.file);
+  } catch (const InputError& e) {
+    throw InputError(ctx.file, childPointer(childPointer(childPointer(pointer, "mesh"), "obj"), "path"), e.what());
+  }
+}
+
+ClothSpec parseCloth(const json& j, const std::string& pointer, std::size_t index, const Context& ctx) {
+  const FieldReader r(j, pointer, ctx.file, {"name", "mesh", "placement", "material", "weft_angle_deg", "pins"});
+  ClothSpec cloth;
+  cloth.name = r.string("name", index == 0 ? std::string("cloth") : "cloth" + std::to_string(index));
+  requireSafeName(r, "name", cloth.name);
+  parseMesh(r.required("mesh", "{\"grid\": {...}} or {\"obj\": {\"path\": ...}}"), r.pointer("mesh"), ctx, cloth);
+  if (r.has("placement")) cloth.placement = parsePlacement(r.at("placement"), r.pointer("placement"), ctx);
+  parseMaterialField(r, ctx, cloth);
+  cloth.weftAngleDeg = r.number("weft_angle_deg", cloth.weftAngleDeg, Bound::Finite);
+  if (r.has("pins")) {
+    const json& groups = r.array("pins");
+    for (std::size_t g = 0; g < groups.size(); ++g) {
+      cloth.pins.push_back(parsePinGroup(groups[g], childPointer(r.pointer("pins"), g), ctx));
+    }
+  }
+  checkPinsAgainstMesh(cloth, buildMeshForChecks(cloth, pointer, ctx), pointer, ctx);
+  return cloth;
+}
+
+ForcesSpec parseForces(const json& j, const std::string& pointer, const Context& ctx) {
+  const FieldReader r(j, pointer, ctx.file, {"gravity", "wind", "damping"});
+  ForcesSpec forces;
+  forces.gravity = r.vec3("gravity", forces.gravity);
+  if (r.has("wind")) {
+    const FieldReader w(r.at("wind"), r.pointer("wind"), ctx.file,
+                        {"velocity", "air_density", "drag", "lift", "gust_amplitude", "gust_frequency"});
+    WindSpec& wind = forces.wind;
+    wind.velocity = w.vec3("velocity", wind.velocity);
+    wind.airDensity = w.number("air_density", wind.airDensity, Bound::NonNegative);
+    wind.drag = w.number("drag", wind.drag, Bound::NonNegative);
+    wind.lift = w.number("lift", wind.lift, Bound::NonNegative);
+    wind.gustAmplitude = w.number("gust_amplitude", wind.gustAmplitude, Bound::UnitInterval);
+    wind.gustFrequency = w.number("gust_frequency", wind.gustFrequency, Bound::NonNegative);
+  }
+  if (r.has("damping")) {
+    const FieldReader d(r.at("damping"), r.pointer("damping"), ctx.file, {"mass", "stiffness"});
+    forces.damping.mass = d.number("mass", forces.damping.mass, Bound::NonNegative);
+    forces.damping.stiffness = d.number("stiffness", forces.damping.stiffness, Bound::NonNegative);
+  }
+  return forces;
+}
+
+IntegratorKind parseIntegrator(const FieldReader& r) {
+  const std::string name = r.stringValue(r.at("integrator"), r.pointer("integrator"));
+  if (name == "linearized_backward_euler") return IntegratorKind::LinearizedBackwardEuler;
+  if (name == "newton") return IntegratorKind::Newton;
+  if (name == "symplectic_euler") return IntegratorKind::SymplecticEuler;
+  r.fail(r.pointer("integrator"),
+         "unknown integrator \"" + name + "\"; expected linearized_backward_euler, newton or symplectic_euler");
+}
+
+SolverSpec parseSolver(const json& j, const std::string& pointer, const Context& ctx) {
+  const FieldReader r(j, pointer, ctx.file, {"dt", "substeps", "integrator", "newton", "linear_solver", "threads"});
+  SolverSpec solver;
+  solver.dt = r.number("dt", solver.dt, Bound::Positive);
+  solver.substeps = r.integer("substeps", solver.substeps, 1);
+  if (r.has("integrator")) solver.integrator = parseIntegrator(r);
+  if (r.has("newton")) {
+    const FieldReader n(r.at("newton"), r.pointer("newton"), ctx.file, {"max_iterations", "tolerance"});
+    solver.newtonMaxIterations = n.integer("max_iterations", solver.newtonMaxIterations, 1);
+    solver.newtonTolerance = n.number("tolerance", solver.newtonTolerance, Bound::NonNegative);
+  }
+  if (r.has("linear_solver")) {
+    const FieldReader l(r.at("linear_solver"), r.pointer("linear_solver"), ctx.file,
+                        {"type", "tolerance", "max_iterations"});
+    if (l.has("type")) {
+      const std::string type = l.stringValue(l.at("type"), l.pointer("type"));
+      if (type == "cg") solver.linearSolver = LinearSolverKind::ConjugateGradient;
+      else if (type == "cholmod") solver.linearSolver = LinearSolverKind::Cholmod;
+      else l.fail(l.pointer("type"), "unknown linear solver \"" + type + "\"; expected cg or cholmod");
+    }
+    solver.linearTolerance = l.number("tolerance", solver.linearTolerance, Bound::NonNegative);
+    solver.linearMaxIterations = l.integer("max_iterations", solver.linearMaxIterations, 1);
+  }
+  solver.threads = r.integer("threads", solver.threads, 1);
+  return solver;
+}
+
+StageSwitches parseStages(const json& j, const std::string& pointer, const Context& ctx) {
+  const FieldReader r(j, pointer, ctx.file, {"bending", "wind", "gravity"});
+  StageSwitches stages;
+  stages.bending = r.boolean("bending", stages.bending);
+  stages.wind = r.boolean("wind", stages.wind);
+  stages.gravity = r.boolean("gravity", stages.gravity);
+  return stages;
+}
+
+OutputSpec parseOutput(const json& j, const std::string& pointer, const Context& ctx) {
+  const FieldReader r(j, pointer, ctx.file, {"frames", "fps"});
+  OutputSpec output;
+  output.frames = r.integer("frames", output.frames, 0);
+  output.fps = r.number("fps", output.fps, Bound::Positive);
+  return output;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Overrides.
+
+struct Override {
+  std::string text;                 // as given, for messages
+  std::vector<std::string> path;    // dotted path split into components
+  std::string value;
+};
+
+Override splitOverride(const std::string& text, const std::string& file) {
+  const std::size_t eq = text.find('=');
+  const std::string usage = "an override must look like PATH=VALUE, e.g. solver.dt=0.005 or cloths.0.weft_angle_deg=30";
+  if (eq == std::string::npos) throw InputError(file, "override \"" + text + "\"", "missing '='; " + usage);
+  Override o{text, {}, text.substr(eq + 1)};
+  std::stringstream path(text.substr(0, eq));
+  std::string part;
+  while (std::getline(path, part, '.')) o.path.push_back(part);
+  const bool emptyPart = std::any_of(o.path.begin(), o.path.end(), [](const std::string& p) { return p.empty(); });
+  if (o.path.empty() || emptyPart || text.substr(0, eq).back() == '.') {
+    throw InputError(file, "override \"" + text + "\"", "empty path component; " + usage);
+  }
+  return o;
+}
+
+std::string overridePointer(const Override& o) {
+  std::string pointer;
+  for (const auto& part : o.path) pointer = childPointer(pointer, part);
+  return pointer;
+}
+
+bool parseIndex(const std::string& text, std::size_t& index) {
+  if (text.empty() || !std::all_of(text.begin(), text.end(), [](char c) { return c >= '0' && c <= '9'; })) return false;
+  index = std::stoul(text);
+  return true;
+}
+
+// Appends to an InputError caused by an override the override that caused it: the scene file
+// itself may be fine, and the user should look at their command line instead.
+[[noreturn]] void rethrowNamingOverride(const InputError& e, const std::vector<Override>& overrides) {
+  const std::string prefix = (e.file().empty() ? std::string("<input>") : e.file()) +
+                             (e.field().empty() ? std::string() : ": " + e.field()) + ": ";
+  std::string message = e.what();
+  if (message.rfind(prefix, 0) == 0) message = message.substr(prefix.size());
+  for (auto it = overrides.rbegin(); it != overrides.rend(); ++it) {
+    const std::string p = overridePointer(*it);
+    const bool related = e.field() == p || e.field().rfind(p + "/", 0) == 0 || p.rfind(e.field() + "/", 0) == 0;
+    if (related && !e.field().empty()) {
+      throw InputError(e.file(), e.field(), message + " (from the override " + it->text + ")");
+    }
+  }
+  throw e;
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------------------------------------
+
+SearchPaths defaultSearchPaths(const fs::path& sceneFile) {
+  SearchPaths paths;
+  const fs::path folder = sceneFile.parent_path().empty() ? fs::path(".") : sceneFile.parent_path();
+  paths.materialDirs.push_back((folder / ".." / "materials").lexically_normal());
+  paths.materialDirs.push_back(fs::path(WEFT_SOURCE_DIR) / "presets" / "materials");
+  paths.assetDirs.push_back(folder);
+  paths.assetDirs.push_back(fs::path(WEFT_SOURCE_DIR) / "assets");
+  if (const char* data = std::getenv("WEFT_DATA_DIR"); data != nullptr && *data != '\0') {
+    paths.materialDirs.push_back(fs::path(data) / "presets" / "materials");
+    paths.assetDirs.push_back(fs::path(data) / "assets");
+  }
+  return paths;
+}
+
+void applyOverrides(json& scene, const std::vector<std::string>& overrides, const std::string& file) {
+  for (const auto& text : overrides) {
+    const Override o = splitOverride(text, file);
+    const std::string field = "override \"" + text + "\"";
+    json value = json::parse(o.value, nullptr, /*allow_exceptions=*/false);
+    if (value.is_discarded()) value = o.value;  // not JSON: a plain string such as a preset name
+
+    json* node = &scene;
+    for (std::size_t k = 0; k < o.path.size(); ++k) {
+      const std::string& part = o.path[k];
+      const bool last = k + 1 == o.path.size();
+      if (node->is_array()) {
+        std::size_t index = 0;
+        if (!parseIndex(part, index) || index >= node->size()) {
+          throw InputError(file, field,
+                           "\"" + part + "\" is not an index of the array there (it has " +
+                               std::to_string(node->size()) + " elements, indices 0.." +
+                               std::to_string(static_cast<long>(node->size()) - 1) + ")");
+        }
+        node = &(*node)[index];
+      } else if (node->is_object() || node->is_null()) {
+        // A missing object on the way is created: "solver.newton.tolerance" works on a scene with
+        // no solver section. Unknown keys are rejected later by the strict parser.
+        if (node->is_null()) *node = json::object();
+        node = &(*node)[part];
+        if (!last && node->is_null()) *node = json::object();
+      } else {
+        throw InputError(file, field,
+                         "cannot set \"" + part + "\" inside a " + std::string(node->type_name()) +
+                             " value; only objects and arrays have fields");
+      }
+      if (last) *node = value;
+    }
+  }
+}
+
+Scene parseScene(const json& j, const fs::path& file, const SearchPaths& paths) {
+  const Context ctx{file.string(), paths};
+  const FieldReader r(j, "", ctx.file, {"name", "description", "cloths", "forces", "solver", "stages", "output"});
+  Scene scene;
+  scene.file = file;
+  scene.name = r.string("name", file.stem().string());
+  requireSafeName(r, "name", scene.name);
+  scene.description = r.string("description", "");
+  r.required("cloths", "an array of at least one cloth");
+  const json& cloths = r.array("cloths");
+  if (cloths.empty()) r.fail(r.pointer("cloths"), "must contain at least one cloth");
+  for (std::size_t i = 0; i < cloths.size(); ++i) {
+    ClothSpec cloth = parseCloth(cloths[i], childPointer(r.pointer("cloths"), i), i, ctx);
+    for (const auto& other : scene.cloths) {
+      if (other.name == cloth.name) {
+        throw InputError(ctx.file, childPointer(childPointer(r.pointer("cloths"), i), "name"),
+                         "cloth names must be unique (they name output files); \"" + cloth.name + "\" is used twice");
+      }
+    }
+    scene.cloths.push_back(std::move(cloth));
+  }
+  if (r.has("forces")) scene.forces = parseForces(r.at("forces"), r.pointer("forces"), ctx);
+  if (r.has("solver")) scene.solver = parseSolver(r.at("solver"), r.pointer("solver"), ctx);
+  if (r.has("stages")) scene.stages = parseStages(r.at("stages"), r.pointer("stages"), ctx);
+  if (r.has("output")) scene.output = parseOutput(r.at("output"), r.pointer("output"), ctx);
+  return scene;
+}
+
+Scene loadScene(const fs::path& file, const std::vector<std::string>& overrides) {
+  std::ifstream in(file);
+  if (!in) throw InputError(file.string(), "", "cannot open the scene file");
+  json j;
+  try {
+    j = json::parse(in, nullptr, /*allow_exceptions=*/true, /*ignore_comments=*/true);
+  } catch (const json::exception& e) {  // a syntax error (with its position) or a number overflow
+    throw InputError(file.string(), "", std::string("not valid JSON: ") + e.what());
+  }
+  std::vector<Override> parsed;
+  for (const auto& text : overrides) parsed.push_back(splitOverride(text, file.string()));
+  applyOverrides(j, overrides, file.string());
+  try {
+    return parseScene(j, file, defaultSearchPaths(file));
+  } catch (const InputError& e) {
+    rethrowNamingOverride(e, parsed);
+  }
+}
+
+}  // namespace weft

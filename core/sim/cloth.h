@@ -1,0 +1,52 @@
+#pragma once
+// One simulated cloth: its mesh, material, weft angle, precomputed elements and pins.
+#include <string>
+#include <vector>
+
+#include "forces/bending.h"
+#include "forces/membrane.h"
+#include "material/material.h"
+#include "mesh/cloth_mesh.h"
+#include "scene/scene.h"
+#include "sim/stage_profile.h"
+
+namespace weft {
+
+// Pinned vertices that move together along a keyframed script.
+struct PinTrack {
+  std::vector<int> vertices;         // sorted, unique
+  std::vector<Vec3> start;           // positions at time 0
+  std::vector<PinKeyframe> script;   // empty: held in place
+};
+
+struct Cloth {
+  std::string name;
+  ClothMesh mesh;
+  Material material;
+  double weftAngleRad = 0.0;
+  std::vector<MembraneElement> membranes;  // one per triangle, same ids
+  std::vector<BendingHinge> hinges;        // one per interior edge with stiffness
+  std::vector<PinTrack> pins;
+};
+
+// Builds the mesh (grid or OBJ), places it, assigns masses, precomputes elements and resolves
+// pins. Throws InputError (naming `sceneFile` and the cloth's JSON path) for a degenerate mesh or
+// a pin selection that selects nothing.
+Cloth buildCloth(const ClothSpec& spec, const std::string& sceneFile, int clothIndex);
+
+// Recomputes the membrane elements and bending hinges from the mesh's rest data (after a
+// topology change or a weft-angle edit).
+void rebuildElements(Cloth& cloth);
+
+// Piecewise-linear offset of a pin script at time t (held before the first and after the last key).
+Vec3 pinOffset(const std::vector<PinKeyframe>& script, double t);
+
+// Every pinned vertex with its target position at time t.
+// Timed as the "pins" stage when the cloth has pins.
+void pinTargets(const Cloth& cloth, double t, std::vector<int>& outVertices, std::vector<Vec3>& outPositions,
+                StageProfile& profile);
+
+// Vertex pairs coupled by an element (triangle edges and hinge wings): the system matrix pattern.
+std::vector<std::pair<int, int>> coupledVertexPairs(const Cloth& cloth);
+
+}  // namespace weft

@@ -1,0 +1,15 @@
+#!/usr/bin/env bash
+# The main job: install, build, then open the editor on the default scene where a display exists;
+# with no display, run the default scene headless and write its results under ./out.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+scripts/install_deps.sh
+scripts/build.sh
+SCENE=presets/scenes/hanging-sheet.json
+if [ -n "${DISPLAY:-}${WAYLAND_DISPLAY:-}" ]; then
+  if ./build/app/weft edit "$SCENE"; then exit 0; fi
+  status=$?
+  [ "$status" -ne 2 ] && exit "$status"
+  echo "weft: falling back to a headless run" >&2
+fi
+./build/app/weft run "$SCENE" --out out/hanging-sheet --obj "$@"

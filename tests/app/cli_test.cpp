@@ -1,0 +1,251 @@
+// The `weft` command line, run as a user would: the built binary (WEFT_BINARY) in a temporary
+// working folder, checking exit codes, messages and the files it writes.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+const fs::path kPresetScenes = fs::path(WEFT_SOURCE_DIR) / "presets" / "scenes";
+const fs::path kHangingSheet = kPresetScenes / "hanging-sheet.json";
+
+// A tiny version of the hanging sheet: 8 x 8 vertices, 5 frames.
+const std::string kTiny = "--set 'cloths.0.mesh.grid.resolution=[8,8]' --frames 5";
+
+struct Result {
+  int exitCode = -1;
+  std::string output;  // stdout and stderr together
+};
+
+// Each test gets its own working folder (`work/`), so that default output paths such as
+// out/<scene> land there and nothing depends on where the test runner was started.
+class WeftCli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    std::random_device seed;
+    root_ = fs::temp_directory_path() / ("weft_cli_test_" + std::to_string(seed()));
+    fs::create_directories(root_ / "work");
+  }
+  void TearDown() override {
+    std::error_code ignored;
+    fs::remove_all(root_, ignored);
+  }
+
+  fs::path work() const { return root_ / "work"; }
+
+  Result weft(const std::string& arguments) const {
+    const fs::path log = root_ / "output.txt";
+    const std::string command = "cd '" + work().string() + "' && '" + std::string(WEFT_BINARY) + "' " + arguments +
+                                " > '" + log.string() + "' 2>&1";
+    const int status = std::system(command.c_str());
+    Result r;
+    r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    std::ifstream in(log);
+    std::stringstream text;
+    text << in.rdbuf();
+    r.output = text.str();
+    return r;
+  }
+
+  fs::path writeScene(const std::string& name, const json& scene) const {
+    const fs::path file = root_ / name;
+    std::ofstream(file) << scene.dump(2);
+    return file;
+  }
+
+  static json readJson(const fs::path& file) {
+    std::ifstream in(file);
+    return json::parse(in);
+  }
+
+ private:
+  fs::path root_;
+};
+
+std::string quoted(const fs::path& path) { return "'" + path.string() + "'"; }
+
+json badScene() {
+  return json::parse(R"({"name": "bad", "cloths": [{"mesh": {"grid": {}}, "material": "royal-target"}],
+                         "solver": {"dt": -1}})");
+}
+
+TEST_F(WeftCli, ValidateAcceptsEveryPresetScene) {
+  int count = 0;
+  for (const auto& entry : fs::directory_iterator(kPresetScenes)) {
+    if (entry.path().extension() != ".json") continue;
+    SCOPED_TRACE(entry.path().string());
+    const Result r = weft("validate " + quoted(entry.path()));
+    EXPECT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_EQ(r.output.rfind("ok: " + entry.path().stem().string() + ": 1 cloths, ", 0), 0u) << r.output;
+    ++count;
+  }
+  EXPECT_GE(count, 3);
+}
+
+TEST_F(WeftCli, ValidateRejectsABadSceneNamingTheField) {
+  const Result r = weft("validate " + quoted(writeScene("bad.json", badScene())));
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  EXPECT_NE(r.output.find("/solver/dt"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("bad.json"), std::string::npos) << r.output;
+}
+
+TEST_F(WeftCli, ValidateAppliesOverrides) {
+  const Result r = weft("validate " + quoted(kHangingSheet) + " --set solver.integrator=leapfrog");
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  EXPECT_NE(r.output.find("/solver/integrator"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("leapfrog"), std::string::npos) << r.output;
+}
+
+TEST_F(WeftCli, RunWritesMetricsWithEveryDocumentedKey) {
+  const Result r = weft("run " + quoted(kHangingSheet) + " " + kTiny + " --out result --obj");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  const fs::path metricsFile = work() / "result" / "metrics.json";
+  ASSERT_TRUE(fs::is_regular_file(metricsFile)) << r.output;
+  const json m = readJson(metricsFile);
+  for (const char* key : {"scene", "steps", "sim_time_s", "wall_s", "stages", "stage_ms", "vertices", "triangles",
+                          "max_strain", "kinetic_energy", "elastic_energy", "gravity_energy", "finite", "solver",
+                          "state_hash", "threads", "dt", "substeps"}) {
+    EXPECT_TRUE(m.contains(key)) << "metrics.json lacks " << key;
+  }
+  for (const char* key : {"integrator", "linear_solver", "linear_iterations", "last_linear_residual",
+                          "max_linear_residual", "newton_iterations", "last_newton_residual", "linear_solve_failures"}) {
+    EXPECT_TRUE(m["solver"].contains(key)) << "metrics.json lacks solver." << key;
+  }
+  EXPECT_EQ(m["scene"], "hanging-sheet");
+  EXPECT_EQ(m["finite"], true);
+  EXPECT_EQ(m["vertices"], 64);
+  EXPECT_EQ(m["steps"], 10);  // 5 frames at 30 fps, dt = 1/60
+  EXPECT_NEAR(m["sim_time_s"].get<double>(), 10.0 / 60.0, 1e-9);
+  EXPECT_EQ(m["state_hash"].get<std::string>().size(), 16u);
+  EXPECT_FALSE(m["stages"].empty());
+  EXPECT_FALSE(m["stage_ms"].empty());
+
+  // --obj: frame 0 is the initial state, then one file per frame; nothing half-written remains.
+  for (int frame = 0; frame <= 5; ++frame) {
+    char name[32];
+    std::snprintf(name, sizeof name, "frame_%04d.obj", frame);
+    EXPECT_TRUE(fs::is_regular_file(work() / "result" / "frames" / name)) << name;
+  }
+  for (const auto& entry : fs::recursive_directory_iterator(work() / "result")) {
+    EXPECT_NE(entry.path().extension(), ".tmp") << entry.path();
+  }
+  std::ifstream obj(work() / "result" / "frames" / "frame_0005.obj");
+  std::string text((std::istreambuf_iterator<char>(obj)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("\nv "), std::string::npos);
+  EXPECT_NE(text.find("\nvt "), std::string::npos);
+  EXPECT_NE(text.find("\nf "), std::string::npos);
+}
+
+TEST_F(WeftCli, RunWritesToOutSceneNameByDefault) {
+  const Result r = weft("run " + quoted(kHangingSheet) + " " + kTiny + " --quiet");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_TRUE(fs::is_regular_file(work() / "out" / "hanging-sheet" / "metrics.json"));
+  EXPECT_EQ(r.output, "") << "--quiet should print nothing on success";
+}
+
+TEST_F(WeftCli, RunPrintsStagesAndTheirShares) {
+  const Result r = weft("run " + quoted(kHangingSheet) + " " + kTiny + " --out result");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_NE(r.output.find("stages:"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("membrane"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("%"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("metrics.json"), std::string::npos) << r.output;
+}
+
+TEST_F(WeftCli, BadSceneLeavesNoOutputFolder) {
+  const fs::path scene = writeScene("bad.json", badScene());
+  const Result r = weft("run " + quoted(scene) + " --out result");
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  EXPECT_EQ(r.output.rfind("weft: ", 0), 0u) << r.output;
+  EXPECT_NE(r.output.find("/solver/dt"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(work() / "result"));
+
+  const Result byDefault = weft("run " + quoted(scene));
+  EXPECT_EQ(byDefault.exitCode, 2) << byDefault.output;
+  EXPECT_FALSE(fs::exists(work() / "out"));
+}
+
+TEST_F(WeftCli, BadOverrideIsBadInput) {
+  const Result r = weft("run " + quoted(kHangingSheet) + " --set solver.dt=NaN --out result");
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  EXPECT_NE(r.output.find("solver.dt=NaN"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(work() / "result"));
+}
+
+TEST_F(WeftCli, RunTwiceGivesTheSameStateHash) {
+  ASSERT_EQ(weft("run " + quoted(kHangingSheet) + " " + kTiny + " --quiet --out a").exitCode, 0);
+  ASSERT_EQ(weft("run " + quoted(kHangingSheet) + " " + kTiny + " --quiet --out b").exitCode, 0);
+  const json a = readJson(work() / "a" / "metrics.json");
+  const json b = readJson(work() / "b" / "metrics.json");
+  EXPECT_EQ(a["state_hash"], b["state_hash"]);
+}
+
+TEST_F(WeftCli, StateHashDoesNotDependOnThreads) {
+  ASSERT_EQ(weft("run " + quoted(kHangingSheet) + " " + kTiny + " --quiet --threads 1 --out one").exitCode, 0);
+  ASSERT_EQ(weft("run " + quoted(kHangingSheet) + " " + kTiny + " --quiet --threads 2 --out two").exitCode, 0);
+  const json one = readJson(work() / "one" / "metrics.json");
+  const json two = readJson(work() / "two" / "metrics.json");
+  EXPECT_EQ(one["threads"], 1);
+  EXPECT_EQ(two["threads"], 2);
+  EXPECT_EQ(one["state_hash"], two["state_hash"]);
+}
+
+TEST_F(WeftCli, NonFiniteRunStillWritesMetricsAndExits3) {
+  // Symplectic Euler at 60 Hz on a stiff woven fabric is far past its stability limit.
+  const Result r = weft("run " + quoted(kHangingSheet) +
+                        " --set 'cloths.0.mesh.grid.resolution=[8,8]' --set solver.integrator=symplectic_euler"
+                        " --set cloths.0.material=isotropic-stiff --frames 300 --quiet --out result");
+  EXPECT_EQ(r.exitCode, 3) << r.output;
+  ASSERT_TRUE(fs::is_regular_file(work() / "result" / "metrics.json")) << r.output;
+  EXPECT_EQ(readJson(work() / "result" / "metrics.json")["finite"], false);
+}
+
+TEST_F(WeftCli, EditAndNoArgumentsExplainThatTheEditorIsNotBuilt) {
+  for (const std::string& arguments : std::vector<std::string>{"edit", "edit " + quoted(kHangingSheet), ""}) {
+    SCOPED_TRACE("weft " + arguments);
+    const Result r = weft(arguments);
+    EXPECT_EQ(r.exitCode, 2) << r.output;
+    EXPECT_NE(r.output.find("the editor is not built yet"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("weft run SCENE"), std::string::npos) << r.output;
+  }
+}
+
+TEST_F(WeftCli, UsageErrorsExit2) {
+  EXPECT_EQ(weft("run").exitCode, 2);                                         // missing SCENE
+  EXPECT_EQ(weft("run " + quoted(kHangingSheet) + " --frobnicate").exitCode, 2);  // unknown option
+  EXPECT_EQ(weft("run " + quoted(kHangingSheet) + " --frames -3").exitCode, 2);
+  EXPECT_EQ(weft("bench --integrators euler").exitCode, 2);
+  EXPECT_EQ(weft("fly").exitCode, 2);
+  EXPECT_EQ(weft("--help").exitCode, 0);
+}
+
+TEST_F(WeftCli, BenchWritesACsvNamingTheMachine) {
+  const Result r = weft("bench --sizes 6 --integrators lbe,symplectic --solvers cg --steps 2 --warmup 1 --repeats 3 "
+                        "--csv bench/out.csv");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  std::ifstream csv(work() / "bench" / "out.csv");
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(csv, line);) lines.push_back(line);
+  ASSERT_EQ(lines.size(), 4u) << r.output;  // machine line, header, lbe+cg, symplectic
+  EXPECT_EQ(lines[0].rfind("# weft bench; machine: ", 0), 0u) << lines[0];
+  EXPECT_NE(lines[0].find("cores: "), std::string::npos) << lines[0];
+  EXPECT_EQ(lines[1].rfind("size,vertices,", 0), 0u) << lines[1];
+  EXPECT_EQ(lines[2].rfind("6,36,", 0), 0u) << lines[2];
+  EXPECT_NE(lines[2].find("linearized_backward_euler,cg"), std::string::npos) << lines[2];
+  EXPECT_NE(lines[3].find("symplectic_euler,none"), std::string::npos) << lines[3];
+  EXPECT_NE(lines[3].find(",true,"), std::string::npos) << "the chosen substeps should keep it stable: " << lines[3];
+}
+
+}  // namespace

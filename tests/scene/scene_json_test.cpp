@@ -1,0 +1,361 @@
+// Scene files: every preset loads, defaults and overrides land in the right field, and each kind
+// of bad input is rejected with an InputError that names the file and the JSON path of the field.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "scene/scene_json.h"
+#include "util/input_error.h"
+
+namespace weft {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+const fs::path kPresetScenes = fs::path(WEFT_SOURCE_DIR) / "presets" / "scenes";
+
+// A fresh folder per test, removed afterwards.
+class TempDir {
+ public:
+  TempDir() {
+    std::random_device seed;
+    path_ = fs::temp_directory_path() / ("weft_scene_test_" + std::to_string(seed()));
+    fs::create_directories(path_);
+  }
+  ~TempDir() {
+    std::error_code ignored;
+    fs::remove_all(path_, ignored);
+  }
+  const fs::path& path() const { return path_; }
+  fs::path write(const std::string& name, const std::string& contents) const {
+    const fs::path file = path_ / name;
+    fs::create_directories(file.parent_path());
+    std::ofstream(file) << contents;
+    return file;
+  }
+
+ private:
+  fs::path path_;
+};
+
+// The smallest valid scene: one grid cloth of a preset material, everything else defaulted.
+json minimalScene() {
+  return json::parse(R"({"cloths": [{"mesh": {"grid": {}}, "material": "royal-target"}]})");
+}
+
+json isotropicMaterial() {
+  return json::parse(R"({
+    "area_density_kg_m2": 0.2,
+    "elasticity": {"model": "isotropic", "young_modulus_n_per_m": 3000, "poisson_ratio": 0.3},
+    "bending": {"model": "constant", "stiffness_n_m": 1e-4}
+  })");
+}
+
+// A 2 x 2 quad in an OBJ file with UVs; `degenerate` collapses one triangle's UVs onto a line.
+std::string squareObj(bool degenerate) {
+  std::string obj =
+      "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n"
+      "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n";
+  if (degenerate) obj += "vt 0.5 0.5\nf 1/1 2/2 3/3\nf 1/1 3/3 4/5\n";  // (0,0), (1,1), (0.5,0.5): collinear
+  else obj += "f 1/1 2/2 3/3\nf 1/1 3/3 4/4\n";
+  return obj;
+}
+
+TEST(SceneJson, EveryPresetSceneLoads) {
+  int count = 0;
+  for (const auto& entry : fs::directory_iterator(kPresetScenes)) {
+    if (entry.path().extension() != ".json") continue;
+    SCOPED_TRACE(entry.path().string());
+    const Scene scene = loadScene(entry.path());
+    EXPECT_FALSE(scene.cloths.empty());
+    EXPECT_EQ(scene.name, entry.path().stem().string()) << "a preset's name should match its file name";
+    ++count;
+  }
+  EXPECT_GE(count, 3);
+}
+
+TEST(SceneJson, HangingSheetIsTheDocumentedScene) {
+  const Scene scene = loadScene(kPresetScenes / "hanging-sheet.json");
+  ASSERT_EQ(scene.cloths.size(), 1u);
+  const ClothSpec& sheet = scene.cloths[0];
+  ASSERT_TRUE(sheet.grid.has_value());
+  EXPECT_EQ(sheet.grid->resolutionX, 32);
+  EXPECT_EQ(sheet.grid->resolutionY, 32);
+  EXPECT_DOUBLE_EQ(sheet.grid->width, 1.0);
+  EXPECT_EQ(sheet.materialName, "royal-target");
+  EXPECT_EQ(sheet.material.name, "royal-target");
+  ASSERT_EQ(sheet.pins.size(), 1u);
+  EXPECT_EQ(sheet.pins[0].corners, (std::vector<std::string>{"top_left", "top_right"}));
+  EXPECT_EQ(stepsPerFrame(scene), 2);
+}
+
+TEST(SceneJson, SheetMovedByPinsHasAnIncreasingScript) {
+  const Scene scene = loadScene(kPresetScenes / "sheet-moved-by-pins.json");
+  const PinGroup& pins = scene.cloths.at(0).pins.at(0);
+  ASSERT_TRUE(pins.restBox.has_value());
+  ASSERT_GE(pins.script.size(), 3u);
+  for (std::size_t k = 1; k < pins.script.size(); ++k) EXPECT_GT(pins.script[k].time, pins.script[k - 1].time);
+  EXPECT_DOUBLE_EQ(pins.script[1].offset.x(), 0.3);
+}
+
+TEST(SceneJson, ObjPathResolvesAgainstTheAssetsFolder) {
+  const Scene scene = loadScene(kPresetScenes / "draped-obj-sheet.json");
+  ASSERT_TRUE(scene.cloths.at(0).obj.has_value());
+  EXPECT_TRUE(fs::is_regular_file(scene.cloths[0].obj->path)) << scene.cloths[0].obj->path;
+  EXPECT_EQ(scene.cloths[0].obj->path.filename(), "square_sheet.obj");
+}
+
+TEST(SceneJson, DefaultsAreTheStructDefaults) {
+  TempDir dir;
+  const fs::path file = dir.write("my-scene.json", minimalScene().dump());
+  const Scene scene = loadScene(file);
+  const SolverSpec solver;
+  const ForcesSpec forces;
+  const OutputSpec output;
+  const GridSpec grid;
+  EXPECT_EQ(scene.name, "my-scene");  // the file's stem
+  EXPECT_EQ(scene.description, "");
+  EXPECT_DOUBLE_EQ(scene.solver.dt, solver.dt);
+  EXPECT_EQ(scene.solver.substeps, solver.substeps);
+  EXPECT_EQ(scene.solver.integrator, solver.integrator);
+  EXPECT_EQ(scene.solver.linearSolver, solver.linearSolver);
+  EXPECT_EQ(scene.solver.newtonMaxIterations, solver.newtonMaxIterations);
+  EXPECT_EQ(scene.solver.threads, solver.threads);
+  EXPECT_EQ(scene.forces.gravity, forces.gravity);
+  EXPECT_EQ(scene.forces.wind.velocity, forces.wind.velocity);
+  EXPECT_DOUBLE_EQ(scene.forces.damping.mass, forces.damping.mass);
+  EXPECT_TRUE(scene.stages.bending && scene.stages.wind && scene.stages.gravity);
+  EXPECT_EQ(scene.output.frames, output.frames);
+  EXPECT_DOUBLE_EQ(scene.output.fps, output.fps);
+  const ClothSpec& cloth = scene.cloths.at(0);
+  EXPECT_EQ(cloth.name, "cloth");
+  EXPECT_EQ(cloth.grid->resolutionX, grid.resolutionX);
+  EXPECT_DOUBLE_EQ(cloth.grid->height, grid.height);
+  EXPECT_EQ(cloth.placement.translate, Vec3::Zero());
+  EXPECT_DOUBLE_EQ(cloth.weftAngleDeg, 0.0);
+  EXPECT_TRUE(cloth.pins.empty());
+}
+
+TEST(SceneJson, OverridesChangeTheNamedValue) {
+  const Scene base = loadScene(kPresetScenes / "hanging-sheet.json");
+  const Scene scene = loadScene(kPresetScenes / "hanging-sheet.json",
+                                {"solver.dt=0.005", "cloths.0.weft_angle_deg=30", "solver.substeps=4",
+                                 "cloths.0.material=tango-red-jet-set", "cloths.0.mesh.grid.resolution=[8, 9]"});
+  EXPECT_DOUBLE_EQ(scene.solver.dt, 0.005);
+  EXPECT_DOUBLE_EQ(scene.cloths[0].weftAngleDeg, 30.0);
+  EXPECT_EQ(scene.solver.substeps, 4);
+  EXPECT_EQ(scene.cloths[0].materialName, "tango-red-jet-set");  // not JSON: taken as a string
+  EXPECT_EQ(scene.cloths[0].grid->resolutionX, 8);
+  EXPECT_EQ(scene.cloths[0].grid->resolutionY, 9);
+  // Untouched values stay as they were.
+  EXPECT_EQ(scene.output.frames, base.output.frames);
+  EXPECT_EQ(scene.solver.integrator, base.solver.integrator);
+}
+
+TEST(SceneJson, OverridesCanAddAKeyTheFileLeavesOut) {
+  TempDir dir;
+  const fs::path file = dir.write("s.json", minimalScene().dump());  // no solver section at all
+  const Scene scene = loadScene(file, {"solver.substeps=3", "solver.newton.tolerance=1e-3", "forces.wind.velocity=[1,0,0]"});
+  EXPECT_EQ(scene.solver.substeps, 3);
+  EXPECT_DOUBLE_EQ(scene.solver.newtonTolerance, 1e-3);
+  EXPECT_EQ(scene.forces.wind.velocity, Vec3(1, 0, 0));
+}
+
+TEST(SceneJson, ApplyOverridesEditsTheJson) {
+  json j = minimalScene();
+  applyOverrides(j, {"cloths.0.weft_angle_deg=45", "name=\"quoted\"", "stages.wind=false"}, "f.json");
+  EXPECT_EQ(j["cloths"][0]["weft_angle_deg"], 45);
+  EXPECT_EQ(j["name"], "quoted");
+  EXPECT_EQ(j["stages"]["wind"], false);
+}
+
+TEST(SceneJson, MalformedOverridesNameTheOverride) {
+  json j = minimalScene();
+  for (const std::string bad : {"solver.dt", "solver..dt=1", "cloths.3.name=x", "cloths.x.name=y",
+                                "cloths.0.material.x=1"}) {
+    SCOPED_TRACE(bad);
+    try {
+      applyOverrides(j, {bad}, "f.json");
+      ADD_FAILURE() << "no InputError";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(bad), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("f.json"), std::string::npos) << e.what();
+    }
+  }
+}
+
+TEST(SceneJson, MaterialPresetsAreFoundBesideTheScenesFolder) {
+  TempDir dir;
+  json material = isotropicMaterial();
+  material["name"] = "my-fabric";
+  material["source"] = "a test";
+  dir.write("materials/my-fabric.json", material.dump());
+  json scene = minimalScene();
+  scene["cloths"][0]["material"] = "my-fabric";
+  const Scene loaded = loadScene(dir.write("scenes/s.json", scene.dump()));
+  EXPECT_EQ(loaded.cloths[0].materialName, "my-fabric");
+  EXPECT_DOUBLE_EQ(loaded.cloths[0].material.areaDensity, 0.2);
+}
+
+TEST(SceneJson, InlineMaterialAndObjBesideTheScene) {
+  TempDir dir;
+  dir.write("quad.obj", squareObj(false));
+  json scene = minimalScene();
+  scene["cloths"][0]["material"] = isotropicMaterial();
+  scene["cloths"][0]["mesh"] = {{"obj", {{"path", "quad.obj"}}}};
+  scene["cloths"][0]["pins"] = json::parse(R"([{"vertices": [0, 1]}])");
+  const Scene loaded = loadScene(dir.write("s.json", scene.dump()));
+  EXPECT_EQ(loaded.cloths[0].materialName, "inline");
+  EXPECT_EQ(loaded.cloths[0].material.elasticity.model, ElasticitySettings::Model::Isotropic);
+  EXPECT_TRUE(fs::equivalent(loaded.cloths[0].obj->path, dir.path() / "quad.obj"));
+}
+
+TEST(SceneJson, StepsPerFrameRoundsAndNeverReturnsZero) {
+  Scene scene;
+  scene.output.fps = 30;
+  scene.solver.dt = 0.016666;
+  EXPECT_EQ(stepsPerFrame(scene), 2);
+  scene.solver.dt = 0.001;
+  EXPECT_EQ(stepsPerFrame(scene), 33);
+  scene.solver.dt = 0.1;
+  EXPECT_EQ(stepsPerFrame(scene), 1);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Bad input: each case edits the minimal scene (or supplies an override) and names the field
+// that the message must point at.
+
+struct BadCase {
+  std::string name;
+  std::string patch;                   // JSON merge patch applied to the minimal scene
+  std::vector<std::string> overrides;
+  std::string field;                   // expected InputError::field() (a prefix, for material errors)
+  std::string mentions;                // a word the message must contain
+};
+
+std::ostream& operator<<(std::ostream& out, const BadCase& c) { return out << c.name; }
+
+class SceneJsonRejects : public ::testing::TestWithParam<BadCase> {};
+
+TEST_P(SceneJsonRejects, NamingTheFileAndTheField) {
+  const BadCase& c = GetParam();
+  TempDir dir;
+  dir.write("degenerate.obj", squareObj(true));
+  json scene = minimalScene();
+  if (!c.patch.empty()) scene.merge_patch(json::parse(c.patch));
+  const fs::path file = dir.write("bad-scene.json", scene.dump(2));
+  try {
+    (void)loadScene(file, c.overrides);
+    FAIL() << "loaded without an InputError";
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("bad-scene.json"), std::string::npos) << what;
+    EXPECT_EQ(e.field().rfind(c.field, 0), 0u) << "field " << e.field() << ", expected " << c.field << "; " << what;
+    EXPECT_NE(what.find(c.field), std::string::npos) << what;
+    EXPECT_NE(what.find(c.mentions), std::string::npos) << "expected '" << c.mentions << "' in: " << what;
+  }
+}
+
+const char* const kGridCloth = R"("mesh": {"grid": {}}, "material": "royal-target")";
+
+std::string cloth(const std::string& extra) {
+  return std::string(R"({"cloths": [{)") + kGridCloth + (extra.empty() ? "" : ", " + extra) + "}]}";
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    BadInput, SceneJsonRejects,
+    ::testing::Values(
+        BadCase{"MissingCloths", R"({"cloths": null})", {}, "/cloths", "missing"},
+        BadCase{"EmptyCloths", R"({"cloths": []})", {}, "/cloths", "at least one"},
+        BadCase{"MissingMesh", R"({"cloths": [{"material": "royal-target"}]})", {}, "/cloths/0/mesh", "missing"},
+        BadCase{"MissingMaterial", R"({"cloths": [{"mesh": {"grid": {}}}]})", {}, "/cloths/0/material", "missing"},
+        BadCase{"WrongType", R"({"solver": {"dt": "fast"}})", {}, "/solver/dt", "got string"},
+        BadCase{"UnknownKey", R"({"solver": {"dtt": 0.01}})", {}, "/solver/dtt", "allowed keys"},
+        BadCase{"UnknownTopLevelKey", R"({"colths": []})", {}, "/colths", "unknown key"},
+        BadCase{"NegativeDt", R"({"solver": {"dt": -1}})", {}, "/solver/dt", "got -1"},
+        BadCase{"NaNByOverride", "", {"solver.dt=NaN"}, "/solver/dt", "solver.dt=NaN"},
+        BadCase{"UnknownKeyByOverride", "", {"solver.foo=1"}, "/solver/foo", "solver.foo=1"},
+        BadCase{"MalformedOverride", "", {"solver.dt"}, "override", "solver.dt"},
+        BadCase{"ZeroSubsteps", R"({"solver": {"substeps": 0}})", {}, "/solver/substeps", ">= 1"},
+        BadCase{"FractionalSubsteps", R"({"solver": {"substeps": 1.5}})", {}, "/solver/substeps", "integer"},
+        BadCase{"ZeroThreads", R"({"solver": {"threads": 0}})", {}, "/solver/threads", ">= 1"},
+        BadCase{"NegativeTolerance", R"({"solver": {"linear_solver": {"tolerance": -1e-6}}})", {},
+                "/solver/linear_solver/tolerance", ">= 0"},
+        BadCase{"UnknownIntegrator", R"({"solver": {"integrator": "verlet"}})", {}, "/solver/integrator", "verlet"},
+        BadCase{"UnknownLinearSolver", R"({"solver": {"linear_solver": {"type": "lu"}}})", {},
+                "/solver/linear_solver/type", "cholmod"},
+        BadCase{"NegativeFrames", R"({"output": {"frames": -1}})", {}, "/output/frames", ">= 0"},
+        BadCase{"ZeroFps", R"({"output": {"fps": 0}})", {}, "/output/fps", "positive"},
+        BadCase{"GustOutOfRange", R"({"forces": {"wind": {"gust_amplitude": 2}}})", {},
+                "/forces/wind/gust_amplitude", "[0, 1]"},
+        BadCase{"GravityNotAVector", R"({"forces": {"gravity": [0, -9.81]}})", {}, "/forces/gravity", "3 finite"},
+        BadCase{"StageNotBool", R"({"stages": {"wind": 1}})", {}, "/stages/wind", "true or false"},
+        BadCase{"ResolutionTooSmall", R"({"cloths": [{"mesh": {"grid": {"resolution": [1, 8]}}, "material": "royal-target"}]})",
+                {}, "/cloths/0/mesh/grid/resolution/0", ">= 2"},
+        BadCase{"GridAndObj", R"({"cloths": [{"mesh": {"grid": {}, "obj": {"path": "degenerate.obj"}}, "material": "royal-target"}]})",
+                {}, "/cloths/0/mesh", "exactly one"},
+        BadCase{"MissingObjFile", R"({"cloths": [{"mesh": {"obj": {"path": "nowhere.obj"}}, "material": "royal-target"}]})",
+                {}, "/cloths/0/mesh/obj/path", "nowhere.obj"},
+        BadCase{"DegenerateObjTriangle", R"({"cloths": [{"mesh": {"obj": {"path": "degenerate.obj"}}, "material": "royal-target"}]})",
+                {}, "/cloths/0/mesh/obj/path", "degenerate.obj"},
+        BadCase{"UnknownPreset", R"({"cloths": [{"mesh": {"grid": {}}, "material": "no-such-fabric"}]})", {},
+                "/cloths/0/material", "royal-target"},
+        BadCase{"NegativeDensityInline",
+                R"({"cloths": [{"mesh": {"grid": {}}, "material": {"area_density_kg_m2": -1,
+                    "elasticity": {"model": "isotropic", "young_modulus_n_per_m": 3000, "poisson_ratio": 0.3},
+                    "bending": {"model": "constant", "stiffness_n_m": 1e-4}}}]})",
+                {}, "/cloths/0/material", "area_density"},
+        BadCase{"WrongShapedElasticityTable",
+                R"({"cloths": [{"mesh": {"grid": {}}, "material": {"area_density_kg_m2": 0.2,
+                    "elasticity": {"model": "measured", "units": "N/m", "coefficients": ["c11", "c12", "c22", "c33"],
+                                   "direction_deg": [0, 22.5, 45, 67.5, 90], "reference_stretch": 1.1666666666666667,
+                                   "zero_strain": [1, 0, 1, 1],
+                                   "at_reference_stretch": [[1, 0, 1, 1], [1, 0, 1, 1], [1, 0, 1, 1], [1, 0, 1, 1]]},
+                    "bending": {"model": "constant", "stiffness_n_m": 1e-4}}}]})",
+                {}, "/cloths/0/material/elasticity", "at_reference_stretch"},
+        BadCase{"UnknownCorner", cloth(R"("pins": [{"corners": ["top_middle"]}])"), {}, "/cloths/0/pins/0/corners/0",
+                "top_left"},
+        BadCase{"TwoPinSelectors", cloth(R"("pins": [{"corners": ["top_left"], "vertices": [0]}])"), {},
+                "/cloths/0/pins/0", "exactly one"},
+        BadCase{"NoPinSelector", cloth(R"("pins": [{"script": []}])"), {}, "/cloths/0/pins/0", "exactly one"},
+        BadCase{"RestBoxMinAboveMax", cloth(R"("pins": [{"rest_box": {"min": [0, 1], "max": [1, 0.9]}}])"), {},
+                "/cloths/0/pins/0/rest_box", "min"},
+        BadCase{"RestBoxMissesTheCloth", cloth(R"("pins": [{"rest_box": {"min": [5, 5], "max": [6, 6]}}])"), {},
+                "/cloths/0/pins/0/rest_box", "no vertex"},
+        BadCase{"VertexOutOfRange", cloth(R"("pins": [{"vertices": [0, 5000]}])"), {},
+                "/cloths/0/pins/0/vertices/1", "out of range"},
+        BadCase{"ScriptNotIncreasing",
+                cloth(R"("pins": [{"corners": ["top_left"], "script": [{"t": 1, "offset": [0,0,0]}, {"t": 1, "offset": [1,0,0]}]}])"),
+                {}, "/cloths/0/pins/0/script/1/t", "increasing"},
+        BadCase{"UnsafeSceneName", R"({"name": "../escape"})", {}, "/name", "letters"},
+        BadCase{"DuplicateClothNames",
+                std::string(R"({"cloths": [{"name": "a", )") + kGridCloth + R"(}, {"name": "a", )" + kGridCloth + "}]}",
+                {}, "/cloths/1/name", "unique"}),
+    [](const ::testing::TestParamInfo<BadCase>& info) { return info.param.name; });
+
+TEST(SceneJson, InvalidJsonNamesTheFile) {
+  TempDir dir;
+  const fs::path file = dir.write("broken.json", R"({"cloths": [)");
+  try {
+    (void)loadScene(file);
+    FAIL() << "no InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("broken.json"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("not valid JSON"), std::string::npos) << e.what();
+  }
+}
+
+TEST(SceneJson, MissingFileIsAnInputError) {
+  EXPECT_THROW((void)loadScene("/nonexistent/scene.json"), InputError);
+}
+
+}  // namespace
+}  // namespace weft
