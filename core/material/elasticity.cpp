@@ -47,8 +47,8 @@
 //      tangent = C + sum_j [(C_j e) grad q_j^T + grad q_j (C_j e)^T] + sum_j P_j hess q_j
 //                  + sum_{j != k} P_jk grad q_j grad q_k^T
 // Remaining non-smooth places, all of measure zero: the fold at 0 and 90 deg (b = 0), the rows'
-// knots in t, the clamps of s, and the equibiaxial line d = 0, where lambda itself has a cone
-// (its gradient jumps and hess d ~ 1/d grows as d -> 0 while 0 < s < 1). Below d = kTinyGap the
+// knots in t and the clamps of s (the cone of lambda on the equibiaxial line d = 0 is rounded
+// off for s, see interpolationCoordinates). Below d = kTinyGap the
 // angle is undefined: w = 0, and the d-dependent derivatives are dropped (their subgradient mean).
 #include "material/elasticity.h"
 
@@ -67,6 +67,7 @@ namespace {
 using Coefficients = Eigen::Vector4d;
 
 constexpr double kEquibiaxialBlend = 0.01;  // delta: eigen-gap over which the direction fades in
+constexpr double kStretchRounding = 1e-3;   // eigen-gap below which lambda's cone is rounded off for s
 constexpr double kTinyGap = 1e-12;          // below this half eigen-gap the principal direction is undefined
 constexpr double kCouplingLimit = 0.95;     // c12 <= 0.95 sqrt(c11 c22) keeps C positive definite
 
@@ -151,8 +152,28 @@ InterpolationCoordinates interpolationCoordinates(const Vec3& e, double referenc
 
   InterpolationCoordinates q;
 
-  // s from the largest principal stretch lambda = sqrt(m + d).
-  const double mu = m + d;
+  // s from the largest principal stretch lambda = sqrt(m + d). lambda has a cone on the
+  // equibiaxial line d = 0 (its tangent grows like 1/d), so for s alone d is replaced below
+  // r = kStretchRounding by the cubic d~ = 2 d^2/r - d^3/r^2: C1 at d = r, zero with zero slope at
+  // d = 0 (so s stays 0 at rest) and smooth in (h, b), which keeps the tangent bounded.
+  double roundedD = d;
+  Vec3 gradRoundedD = gradD;
+  Mat3 hessRoundedD = hessD;
+  if (d < kStretchRounding) {
+    const double r = kStretchRounding;
+    roundedD = 2.0 * d * d / r - d * d * d / (r * r);
+    const double f = 4.0 / r - 3.0 * d / (r * r);  // d~ = f-weighted: grad d~ = f (h, b)
+    gradRoundedD << f * h, f * b, 0.0;
+    hessRoundedD.setZero();
+    hessRoundedD(0, 0) = hessRoundedD(1, 1) = f;
+    if (d > 0.0) {
+      const double c = 3.0 / (r * r * d);
+      hessRoundedD(0, 0) -= c * h * h;
+      hessRoundedD(1, 1) -= c * b * b;
+      hessRoundedD(0, 1) = hessRoundedD(1, 0) = -c * h * b;
+    }
+  }
+  const double mu = m + roundedD;
   const double span = referenceStretch - 1.0;
   if (mu >= referenceStretch * referenceStretch) {
     q.stretch.value = 1.0;
@@ -160,10 +181,10 @@ InterpolationCoordinates interpolationCoordinates(const Vec3& e, double referenc
     const double lambda = std::sqrt(mu);
     q.stretch.value = (lambda - 1.0) / span;
     if (order >= 1) {
-      const Vec3 gradMu = gradD + Vec3(0.0, 0.0, 1.0);
+      const Vec3 gradMu = gradRoundedD + Vec3(0.0, 0.0, 1.0);
       q.stretch.grad = gradMu / (2.0 * lambda * span);
       if (order >= 2) {
-        q.stretch.hess = (hessD / (2.0 * lambda) - gradMu * gradMu.transpose() / (4.0 * lambda * mu)) / span;
+        q.stretch.hess = (hessRoundedD / (2.0 * lambda) - gradMu * gradMu.transpose() / (4.0 * lambda * mu)) / span;
       }
     }
   }
