@@ -22,6 +22,7 @@
 #include <thread>
 #include <vector>
 
+#include "accuracy_study.h"
 #include "atomic_file.h"
 #include "command.h"
 #include "material/elasticity.h"
@@ -46,6 +47,8 @@ struct BenchOptions {
   int symplecticSubsteps = 0;  // 0: chosen from the mesh and material (see stableSymplecticSubsteps)
   std::string csv = "out/bench/bench.csv";
   std::string scene;  // default: presets/scenes/hanging-sheet.json of this source tree
+  bool accuracy = false;  // run the accuracy study instead of the timing benchmark
+  AccuracyOptions accuracyOptions;
 };
 
 struct Configuration {
@@ -344,7 +347,24 @@ Command addBenchCommand(CLI::App& app) {
       ->check(CLI::PositiveNumber);
   cli->add_option("--csv", options->csv, "CSV output file")->capture_default_str();
   cli->add_option("--scene", options->scene, "Scene to benchmark (its first cloth must be a grid)");
-  return {cli, [options] { return runBench(*options); }};
+  cli->add_flag("--accuracy", options->accuracy,
+                "Instead of timing sizes, measure the error each accuracy knob leaves (time step, Newton iterations, "
+                "CG tolerance, resolution) and its cost");
+  cli->add_option("--accuracy-duration", options->accuracyOptions.duration, "Accuracy study: simulated seconds compared")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  cli->add_option("--accuracy-resolution", options->accuracyOptions.resolution,
+                  "Accuracy study: grid vertices per side (2^k + 1 keeps the resolution study's points shared)")
+      ->check(CLI::Range(3, 257))
+      ->capture_default_str();
+  cli->add_option("--accuracy-csv", options->accuracyOptions.csv, "Accuracy study: CSV output file")->capture_default_str();
+  return {cli, [options] {
+            if (!options->accuracy) return runBench(*options);
+            AccuracyOptions accuracy = options->accuracyOptions;
+            accuracy.scene = options->scene;
+            accuracy.threads = options->threads;
+            return runAccuracyStudy(accuracy);
+          }};
 }
 
 }  // namespace weft::app

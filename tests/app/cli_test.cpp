@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <random>
 #include <sstream>
 #include <string>
@@ -246,6 +247,31 @@ TEST_F(WeftCli, BenchWritesACsvNamingTheMachine) {
   EXPECT_NE(lines[2].find("linearized_backward_euler,cg"), std::string::npos) << lines[2];
   EXPECT_NE(lines[3].find("symplectic_euler,none"), std::string::npos) << lines[3];
   EXPECT_NE(lines[3].find(",true,"), std::string::npos) << "the chosen substeps should keep it stable: " << lines[3];
+}
+
+TEST_F(WeftCli, AccuracyStudyReportsErrorsThatShrinkWithEachKnob) {
+  const Result r = weft("bench --accuracy --accuracy-resolution 5 --accuracy-duration 0.1 --accuracy-csv acc.csv");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  std::ifstream csv(work() / "acc.csv");
+  std::map<std::string, std::vector<double>> errors;  // knob -> max errors in the order studied
+  std::string line;
+  std::getline(csv, line);
+  EXPECT_EQ(line, "knob,value,integrator,dt,max_error_mm,rms_error_mm,ms_per_sixtieth_s");
+  while (std::getline(csv, line)) {
+    std::vector<std::string> fields;
+    std::stringstream row(line);
+    for (std::string field; std::getline(row, field, ',');) fields.push_back(field);
+    ASSERT_EQ(fields.size(), 7u) << line;
+    errors[fields[0] + "/" + fields[2]].push_back(std::stod(fields[4]));
+  }
+  ASSERT_EQ(errors["newton_iterations/newton"].size(), 5u);
+  ASSERT_EQ(errors["cg_tolerance/linearized_backward_euler"].size(), 5u);
+  ASSERT_EQ(errors["time_step/newton"].size(), 4u);
+  // More Newton iterations, a tighter CG tolerance and a smaller step each leave less error.
+  EXPECT_LT(errors["newton_iterations/newton"].back(), errors["newton_iterations/newton"].front());
+  EXPECT_LT(errors["cg_tolerance/linearized_backward_euler"].back(), errors["cg_tolerance/linearized_backward_euler"].front());
+  EXPECT_LT(errors["time_step/newton"].back(), errors["time_step/newton"].front());
+  EXPECT_LT(errors["time_step/linearized_backward_euler"].back(), errors["time_step/linearized_backward_euler"].front());
 }
 
 }  // namespace
