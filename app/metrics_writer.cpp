@@ -21,6 +21,15 @@ std::string linearSolverName(LinearSolverKind kind) {
   return "unknown";
 }
 
+std::string preconditionerName(PreconditionerKind kind) {
+  switch (kind) {
+    case PreconditionerKind::BlockJacobi: return "block_jacobi";
+    case PreconditionerKind::LaggedCholesky: return "lagged_cholesky";
+    case PreconditionerKind::LaggedExactCholesky: return "lagged_exact_cholesky";
+  }
+  return "unknown";
+}
+
 std::string hashHex(std::uint64_t hash) {
   char text[17];
   std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(hash));
@@ -63,6 +72,9 @@ nlohmann::ordered_json runMetrics(const World& world, double wallSeconds) {
   j["solver"] = {
       {"integrator", integratorName(scene.solver.integrator)},
       {"linear_solver", explicitIntegrator ? std::string("none") : linearSolverName(scene.solver.linearSolver)},
+      {"preconditioner", explicitIntegrator || scene.solver.linearSolver != LinearSolverKind::ConjugateGradient
+                             ? std::string("none")
+                             : preconditionerName(scene.solver.linearPreconditioner)},
       {"linear_iterations", stats.linearIterations},
       {"last_linear_residual", stats.lastLinearResidual},
       {"max_linear_residual", stats.maxLinearResidual},

@@ -46,25 +46,49 @@ Mat3 crossMatrix(const Vec3& v) {
   return m;
 }
 
+// A plain 3-vector for the per-hinge arithmetic that runs every step. Eigen evaluates a Vector3d
+// as a 2-wide packet plus a scalar, and its temporaries, stored as scalars and reloaded as packets,
+// stall the CPU (failed store forwarding) for longer than the arithmetic itself takes. The exact
+// Hessian of theta, a validation tool, keeps Eigen.
+struct Plain3 {
+  double x, y, z;
+};
+
+Plain3 plain(const Vec3& v) { return {v.x(), v.y(), v.z()}; }
+Vec3 toEigen(const Plain3& v) { return Vec3(v.x, v.y, v.z); }
+Plain3 operator-(const Plain3& a, const Plain3& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+Plain3 operator+(const Plain3& a, const Plain3& b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
+Plain3 operator*(double s, const Plain3& a) { return {s * a.x, s * a.y, s * a.z}; }
+double dot(const Plain3& a, const Plain3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+Plain3 cross(const Plain3& a, const Plain3& b) {
+  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
+
+// The hinge's four corners.
+struct HingeCorners {
+  Plain3 x0, x1, x2, x3;
+};
+
 struct HingeGeometry {
-  Vec3 e;             // x1 - x0
+  Plain3 e;           // x1 - x0
   double length = 0;  // |e|
-  Vec3 n1, n2;        // N1, N2 (not normalised: |N| is twice the triangle area)
+  Plain3 n1, n2;      // N1, N2 (not normalised: |N| is twice the triangle area)
   double theta = 0;   // signed dihedral angle (rad)
   bool degenerate = true;
 };
 
-HingeGeometry hingeGeometry(const Vec3& x0, const Vec3& x1, const Vec3& x2, const Vec3& x3) {
+HingeGeometry hingeGeometry(const HingeCorners& x) {
   HingeGeometry g;
-  g.e = x1 - x0;
-  g.length = g.e.norm();
-  g.n1 = g.e.cross(x2 - x0);
-  g.n2 = (x3 - x0).cross(g.e);
-  // |N| = height * |e|, so this compares each wing's height with the edge length.
+  g.e = x.x1 - x.x0;
+  g.length = std::sqrt(dot(g.e, g.e));
+  g.n1 = cross(g.e, x.x2 - x.x0);
+  g.n2 = cross(x.x3 - x.x0, g.e);
+  // |N| = height * |e|, so this compares each wing's height with the edge length (squared: no root).
   const double minNormal = kDegenerateHeightRatio * g.length * g.length;
-  g.degenerate = !(g.length > 0.0) || !(g.n1.norm() > minNormal) || !(g.n2.norm() > minNormal);
+  const double minNormalSquared = minNormal * minNormal;
+  g.degenerate = !(g.length > 0.0) || !(dot(g.n1, g.n1) > minNormalSquared) || !(dot(g.n2, g.n2) > minNormalSquared);
   if (g.degenerate) return g;
-  g.theta = std::atan2(g.n1.cross(g.n2).dot(g.e) / g.length, g.n1.dot(g.n2));
+  g.theta = std::atan2(dot(cross(g.n1, g.n2), g.e) / g.length, dot(g.n1, g.n2));
   return g;
 }
 
@@ -80,30 +104,27 @@ auto block(Mat12& m, int i, int j) { return m.block<3, 3>(3 * i, 3 * j); }
 // which the u_i would not sum to zero).
 struct DihedralTerms {
   double l;
-  Vec3 m1, m2;
+  Plain3 m1, m2;
   double p1, p2, q1, q2;  // (x2-x1).e, (x3-x1).e, (x2-x0).e, (x3-x0).e
 };
 
-DihedralTerms dihedralTerms(const HingeGeometry& g, const Vec3& x0, const Vec3& x1, const Vec3& x2,
-                            const Vec3& x3) {
+DihedralTerms dihedralTerms(const HingeGeometry& g, const HingeCorners& x) {
   DihedralTerms t;
   t.l = g.length;
-  t.m1 = g.n1 / g.n1.squaredNorm();
-  t.m2 = g.n2 / g.n2.squaredNorm();
-  t.p1 = (x2 - x1).dot(g.e);
-  t.p2 = (x3 - x1).dot(g.e);
-  t.q1 = (x2 - x0).dot(g.e);
-  t.q2 = (x3 - x0).dot(g.e);
+  t.m1 = (1.0 / dot(g.n1, g.n1)) * g.n1;  // one division, not three
+  t.m2 = (1.0 / dot(g.n2, g.n2)) * g.n2;
+  t.p1 = dot(x.x2 - x.x1, g.e);
+  t.p2 = dot(x.x3 - x.x1, g.e);
+  t.q1 = dot(x.x2 - x.x0, g.e);
+  t.q2 = dot(x.x3 - x.x0, g.e);
   return t;
 }
 
-Vec12 dihedralGradient(const DihedralTerms& t) {
-  Vec12 grad;
-  block(grad, 0) = -(t.p1 * t.m1 + t.p2 * t.m2) / t.l;
-  block(grad, 1) = (t.q1 * t.m1 + t.q2 * t.m2) / t.l;
-  block(grad, 2) = -t.l * t.m1;
-  block(grad, 3) = -t.l * t.m2;
-  return grad;
+// d theta / d x_i for the four corners.
+std::array<Plain3, 4> dihedralGradient(const DihedralTerms& t) {
+  const double inverseLength = 1.0 / t.l;
+  return {-inverseLength * (t.p1 * t.m1 + t.p2 * t.m2), inverseLength * (t.q1 * t.m1 + t.q2 * t.m2), -t.l * t.m1,
+          -t.l * t.m2};
 }
 
 // The Hessian of theta: the product rule applied to the gradient above, block by block
@@ -114,17 +135,22 @@ Vec12 dihedralGradient(const DihedralTerms& t) {
 //     dN/da = [c - b]x, dN/db = [a - c]x, dN/dc = [b - a]x;
 //   the dot products p, q are bilinear, so their gradients are read off directly.
 // The result is symmetric up to round-off; it is symmetrised on return.
-Mat12 dihedralHessian(const HingeGeometry& g, const DihedralTerms& t, const Vec3& x0, const Vec3& x1,
+Mat12 dihedralHessian(const HingeGeometry& g, const DihedralTerms& terms, const Vec3& x0, const Vec3& x1,
                       const Vec3& x2, const Vec3& x3) {
-  const Vec3& e = g.e;
+  const struct {  // the terms, with Eigen vectors
+    double l;
+    Vec3 m1, m2;
+    double p1, p2, q1, q2;
+  } t{terms.l, toEigen(terms.m1), toEigen(terms.m2), terms.p1, terms.p2, terms.q1, terms.q2};
+  const Vec3 e = toEigen(g.e);
   const Vec3 unitEdge = e / t.l;
   const Vec3 zero = Vec3::Zero();
   const std::array<Vec3, 4> dl{-unitEdge, unitEdge, zero, zero};
 
-  const Vec3 n1 = g.n1.normalized();
-  const Vec3 n2 = g.n2.normalized();
-  const Mat3 reflect1 = (Mat3::Identity() - 2.0 * n1 * n1.transpose()) / g.n1.squaredNorm();
-  const Mat3 reflect2 = (Mat3::Identity() - 2.0 * n2 * n2.transpose()) / g.n2.squaredNorm();
+  const Vec3 n1 = toEigen(g.n1).normalized();
+  const Vec3 n2 = toEigen(g.n2).normalized();
+  const Mat3 reflect1 = (Mat3::Identity() - 2.0 * n1 * n1.transpose()) / toEigen(g.n1).squaredNorm();
+  const Mat3 reflect2 = (Mat3::Identity() - 2.0 * n2 * n2.transpose()) / toEigen(g.n2).squaredNorm();
   // Triangle 1 is (x0, x1, x2), triangle 2 is (x0, x3, x1).
   const std::array<Mat3, 4> dm1{reflect1 * crossMatrix(x2 - x1), reflect1 * crossMatrix(x0 - x2),
                                 reflect1 * crossMatrix(e), Mat3::Zero()};
@@ -205,8 +231,16 @@ double sineMoment(double d) {
 //   integral sin(tau/2)                 = 2 (cos(a/2) - cos((a+d)/2)) = 4 sin((2a+d)/4) sin(d/4)
 //   integral (tau - a) sin(tau/2)       = cos(a/2) int_0^d u sin(u/2) du + sin(a/2) int_0^d u cos(u/2) du
 //   int_0^d u sin(u/2) du = 2 (2 sin(d/2) - d cos(d/2)),   int_0^d u cos(u/2) du = 2 d sin(d/2) - 8 sin^2(d/4)
+//
+// The first piece (a = 0) holds most hinges; there cos(a/2) = 1 and sin(a/2) = 0, so its sines and
+// cosines of a and the cosine moment drop out (the same numbers, three fewer trigonometric calls).
 double integrateStiffnessPiece(double a, double d, double kStart, double slope) {
   const double quarter = std::sin(0.25 * d);
+  if (a == 0.0) {
+    const double constantPart = 4.0 * quarter * quarter;
+    if (slope == 0.0) return kStart * constantPart;
+    return kStart * constantPart + slope * (2.0 * sineMoment(d));
+  }
   const double constantPart = 4.0 * std::sin(0.25 * (2.0 * a + d)) * quarter;
   if (slope == 0.0) return kStart * constantPart;
   const double momentSin = 2.0 * sineMoment(d);
@@ -288,8 +322,8 @@ std::vector<BendingHinge> buildBendingHinges(const ClothMesh& mesh, double weftA
     hinge.edgeAngle = std::atan2(std::abs(alongWarp), std::abs(alongWeft));
 
     if (restFromCurrent) {
-      const HingeGeometry g =
-          hingeGeometry(mesh.x[hinge.v[0]], mesh.x[hinge.v[1]], mesh.x[hinge.v[2]], mesh.x[hinge.v[3]]);
+      const HingeGeometry g = hingeGeometry(
+          {plain(mesh.x[hinge.v[0]]), plain(mesh.x[hinge.v[1]]), plain(mesh.x[hinge.v[2]]), plain(mesh.x[hinge.v[3]])});
       hinge.restAngle = g.degenerate ? 0.0 : g.theta;
     }
     hinges.push_back(hinge);
@@ -297,35 +331,72 @@ std::vector<BendingHinge> buildBendingHinges(const ClothMesh& mesh, double weftA
   return hinges;
 }
 
-HingeResult evaluateHinge(const BendingHinge& hinge, const BendingSettings& settings, const Vec3& x0, const Vec3& x1,
-                          const Vec3& x2, const Vec3& x3, HessianMode mode) {
-  HingeResult out;
-  if (!bendingEnabled(settings) || !(hinge.restLength > 0.0) || !(hinge.restAreaSum > 0.0)) return out;
-  const HingeGeometry g = hingeGeometry(x0, x1, x2, x3);
-  if (g.degenerate) return out;  // no normal, no angle: finite zero rather than NaN
+void evaluateHinge(const BendingHinge& hinge, const BendingSettings& settings, const Vec3& x0, const Vec3& x1,
+                   const Vec3& x2, const Vec3& x3, HessianMode mode, HingeContribution& out) {
+  // A hinge without stiffness or normal contributes a finite zero rather than NaN.
+  auto contributeNothing = [&] {
+    out.energy = 0.0;
+    for (Vec3& f : out.force) f.setZero();
+    if (mode != HessianMode::None) out.hessian.setZero();
+  };
+  if (!bendingEnabled(settings) || !(hinge.restLength > 0.0) || !(hinge.restAreaSum > 0.0)) return contributeNothing();
+  const HingeCorners corners{plain(x0), plain(x1), plain(x2), plain(x3)};
+  const HingeGeometry g = hingeGeometry(corners);
+  if (g.degenerate) return contributeNothing();
 
   const double c = hinge.restLength * hinge.restLength / (2.0 * hinge.restAreaSum);
   const StiffnessCurve curve = stiffnessCurve(hinge, settings);
   const double phi = bendAngle(g.theta, hinge.restAngle);
   const double tau = std::abs(phi);
   const StiffnessAt k = stiffnessAt(curve, tau);
+  // sin(phi/2) from sin(tau/2): the sine is odd (and the cosine below even), exactly so in floating
+  // point, which saves evaluating both of phi and of tau.
+  const double sinHalfTau = std::sin(0.5 * tau);
+  const double sinHalfPhi = phi < 0.0 ? -sinHalfTau : sinHalfTau;
 
   // W(phi) = c int_0^|phi| k sin(tau/2), W' = c k sin(phi/2) (Eq. 2.56), W'' = c (k' sin|phi|/2 + k cos(phi/2)/2).
   out.energy = c * stiffnessIntegral(curve, tau);
-  const double dW = c * k.k * std::sin(0.5 * phi);
-  const DihedralTerms terms = dihedralTerms(g, x0, x1, x2, x3);
-  const Vec12 gradTheta = dihedralGradient(terms);
-  out.force = -dW * gradTheta;
+  const double dW = c * k.k * sinHalfPhi;
+  const DihedralTerms terms = dihedralTerms(g, corners);
+  const std::array<Plain3, 4> gradTheta = dihedralGradient(terms);
+  for (int i = 0; i < 4; ++i) out.force[i] = toEigen(-dW * gradTheta[i]);
 
-  if (mode == HessianMode::None) return out;
-  const double d2W = c * (k.slope * std::sin(0.5 * tau) + 0.5 * k.k * std::cos(0.5 * phi));
+  if (mode == HessianMode::None) return;
+  const double cosHalfTau = std::cos(0.5 * tau);
+  const double d2W = c * (k.slope * sinHalfTau + 0.5 * k.k * cosHalfTau);
   if (mode == HessianMode::Exact) {
-    out.hessian = d2W * gradTheta * gradTheta.transpose() + dW * dihedralHessian(g, terms, x0, x1, x2, x3);
+    Vec12 gradient;
+    for (int i = 0; i < 4; ++i) block(gradient, i) = toEigen(gradTheta[i]);
+    const Mat12 exact = d2W * gradient * gradient.transpose() + dW * dihedralHessian(g, terms, x0, x1, x2, x3);
+    int stored = 0;  // blocks (i, j), i <= j, row by row
+    for (int i = 0; i < 4; ++i)
+      for (int j = i; j < 4; ++j) out.hessian.upper[stored++] = exact.block<3, 3>(3 * i, 3 * j);
   } else {
     // Gauss-Newton: drop W' times the (indefinite) Hessian of theta and clamp W'' at zero. This
-    // is positive semi-definite, and exact wherever W' = 0, i.e. at the rest angle.
-    out.hessian = std::max(d2W, 0.0) * gradTheta * gradTheta.transpose();
+    // is positive semi-definite, and exact wherever W' = 0, i.e. at the rest angle. The Hessian
+    // of theta is never formed here: the blocks are outer products of the gradient's pieces.
+    const double weight = std::max(d2W, 0.0);
+    int stored = 0;  // blocks (i, j), i <= j, row by row
+    for (int i = 0; i < 4; ++i) {
+      const Plain3 a = weight * gradTheta[i];
+      for (int j = i; j < 4; ++j) {
+        const Plain3& b = gradTheta[j];
+        out.hessian.upper[stored++] << a.x * b.x, a.x * b.y, a.x * b.z,  //
+            a.y * b.x, a.y * b.y, a.y * b.z,                             //
+            a.z * b.x, a.z * b.y, a.z * b.z;
+      }
+    }
   }
+}
+
+HingeResult evaluateHinge(const BendingHinge& hinge, const BendingSettings& settings, const Vec3& x0, const Vec3& x1,
+                          const Vec3& x2, const Vec3& x3, HessianMode mode) {
+  HingeContribution contribution;
+  evaluateHinge(hinge, settings, x0, x1, x2, x3, mode, contribution);
+  HingeResult out;
+  out.energy = contribution.energy;
+  for (int i = 0; i < 4; ++i) out.force.segment<3>(3 * i) = contribution.force[i];
+  if (mode != HessianMode::None) out.hessian = contribution.hessian.dense();
   return out;
 }
 

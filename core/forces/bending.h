@@ -32,6 +32,41 @@ enum class HessianMode {
   Definite,  // positive semi-definite approximation used by the solvers
 };
 
+// A symmetric element Hessian over N vertices, kept as its distinct 3x3 vertex blocks: block
+// (i, j) for i <= j, row by row; block (j, i) is the transpose of block (i, j).
+template <int N>
+struct SymmetricBlocks {
+  static constexpr int kCount = N * (N + 1) / 2;
+  static constexpr int index(int i, int j) { return i * N - i * (i - 1) / 2 + (j - i); }  // needs i <= j
+
+  std::array<Eigen::Matrix3d, kCount> upper;  // left uninitialised until an evaluation asks for a Hessian
+
+  Eigen::Matrix3d& operator()(int i, int j) { return upper[index(i, j)]; }
+  const Eigen::Matrix3d& operator()(int i, int j) const { return upper[index(i, j)]; }
+  void setZero() {
+    for (Eigen::Matrix3d& b : upper) b.setZero();
+  }
+  // The full 3N x 3N matrix.
+  Eigen::Matrix<double, 3 * N, 3 * N> dense() const {
+    Eigen::Matrix<double, 3 * N, 3 * N> m;
+    for (int i = 0; i < N; ++i) {
+      for (int j = i; j < N; ++j) {
+        m.template block<3, 3>(3 * i, 3 * j) = (*this)(i, j);
+        if (j != i) m.template block<3, 3>(3 * j, 3 * i) = (*this)(i, j).transpose();
+      }
+    }
+    return m;
+  }
+};
+
+// What one hinge adds to the cloth's sums, in the form the assembly reads: no dense 12x12 matrix,
+// and no Hessian at all (not even zeroed) when none was asked for.
+struct HingeContribution {
+  double energy = 0.0;
+  std::array<Eigen::Vector3d, 4> force;  // (f0, f1, f2, f3)
+  SymmetricBlocks<4> hessian;            // d^2 energy / dx^2; written only when mode != None
+};
+
 struct HingeResult {
   double energy = 0.0;
   Eigen::Matrix<double, 12, 1> force = Eigen::Matrix<double, 12, 1>::Zero();  // (f0, f1, f2, f3)
@@ -45,6 +80,9 @@ std::vector<BendingHinge> buildBendingHinges(const ClothMesh& mesh, double weftA
 // Evaluates one hinge at positions x0..x3 (ordered as BendingHinge::v).
 HingeResult evaluateHinge(const BendingHinge& hinge, const BendingSettings& settings, const Vec3& x0, const Vec3& x1,
                           const Vec3& x2, const Vec3& x3, HessianMode mode);
+// The same evaluation written into `outContribution` (the form the cloth's assembly uses).
+void evaluateHinge(const BendingHinge& hinge, const BendingSettings& settings, const Vec3& x0, const Vec3& x1,
+                   const Vec3& x2, const Vec3& x3, HessianMode mode, HingeContribution& outContribution);
 
 // True when the material has any bending stiffness (a zero-stiffness cloth runs no bending stage).
 bool bendingEnabled(const BendingSettings& settings);

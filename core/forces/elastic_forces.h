@@ -1,7 +1,9 @@
 #pragma once
 // Internal (elastic) forces of a cloth: the membrane of every triangle and the bending of every
 // hinge, with their energy and Hessian. Elements are evaluated in parallel into per-element
-// buffers and then summed in element order, so the result never depends on the thread count.
+// buffers and then summed in element order (one thread sums each as it goes, in the same order),
+// so the result never depends on the thread count.
+#include <array>
 #include <vector>
 
 #include <Eigen/Core>
@@ -29,8 +31,19 @@ struct ElasticSummary {
 
 // Scratch space reused across steps (no allocation once sized).
 struct ElasticWorkspace {
-  std::vector<MembraneResult> membrane;
-  std::vector<HingeResult> bending;
+  // Per-element results of a multi-threaded evaluation (a single thread adds each element as it
+  // goes, in the same order and with the same arithmetic, so the sums are identical).
+  std::vector<MembraneContribution> membrane;
+  std::vector<HingeContribution> bending;
+
+  // Where each element's 3x3 Hessian blocks sit among the system matrix's values: entry i*N + j
+  // is the offset of column 0 of block (v_i, v_j); the block's other columns follow at the length
+  // of vertex v_j's columns. Looked up once per matrix pattern rather than by search per block.
+  std::vector<std::array<int, 9>> membraneBlockStart;
+  std::vector<std::array<int, 16>> hingeBlockStart;
+  const SystemMatrix* scatterMatrix = nullptr;  // the matrix and pattern the offsets were taken from
+  int scatterPatternVersion = -1;
+  long scatterNonZeros = -1;
 };
 
 // Sets `forces` to the elastic forces at positions x (size n). When options.hessian != None,

@@ -7,14 +7,16 @@ namespace weft {
 
 void ImplicitSystem::ensurePattern(const Cloth& cloth) {
   if (!patternStale && matrix.vertexCount() == cloth.mesh.vertexCount()) return;
-  matrix.setPattern(cloth.mesh.vertexCount(), coupledVertexPairs(cloth));
+  const CoupledVertexPairs pairs = coupledVertexPairs(cloth);
+  matrix.setPattern(cloth.mesh.vertexCount(), pairs.edges, pairs.hingeWings);
   patternStale = false;
 }
 
-bool ImplicitSystem::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x, StageProfile& profile, SolverStats& stats) {
+bool ImplicitSystem::solve(const Eigen::VectorXd& b, double rhsNormFloor, Eigen::VectorXd& x, StageProfile& profile,
+                           SolverStats& stats) {
   StageTimer timer(profile, "linear_solve");
-  Eigen::VectorXd guess = x;
-  const LinearSolveResult result = solver->solve(matrix, b, x);
+  guess = x;
+  const LinearSolveResult result = solver->solve(matrix, b, rhsNormFloor, x);
   stats.linearIterations += result.iterations;
   stats.lastLinearResidual = result.relativeResidual;
   if (std::isfinite(result.relativeResidual))

@@ -28,9 +28,11 @@ struct ImplicitSystem {
 
   // Rebuilds the matrix pattern when the topology changed (or on first use).
   void ensurePattern(const Cloth& cloth);
-  // Solves matrix * x = rhs, records the statistics; returns false when the solve failed or gave
-  // a non-finite answer (x is then left at its initial guess).
-  bool solve(const Eigen::VectorXd& rhs, Eigen::VectorXd& x, StageProfile& profile, SolverStats& stats);
+  // Solves matrix * x = rhs to |matrix * x - rhs| <= tolerance * max(|rhs|, rhsNormFloor) (see
+  // linear_solver.h), records the statistics; returns false when the solve failed or gave a
+  // non-finite answer (x is then left at its initial guess).
+  bool solve(const Eigen::VectorXd& rhs, double rhsNormFloor, Eigen::VectorXd& x, StageProfile& profile,
+             SolverStats& stats);
 
   SystemMatrix matrix;
   std::unique_ptr<LinearSolver> solver;
@@ -40,7 +42,7 @@ struct ImplicitSystem {
   std::vector<Vec3> internalForce, externalForce;
   std::vector<int> pinnedVertices;
   std::vector<Vec3> pinnedTargets;
-  Eigen::VectorXd rhs, solution, known;
+  Eigen::VectorXd rhs, solution, known, guess;
 };
 
 }  // namespace weft

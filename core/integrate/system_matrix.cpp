@@ -2,24 +2,48 @@
 
 #include <algorithm>
 #include <cassert>
+#include <iterator>
 
 namespace weft {
 
-void SystemMatrix::setPattern(int vertexCount, const std::vector<std::pair<int, int>>& coupledPairs) {
+namespace {
+
+// (min, max) of each pair off the diagonal, sorted, without repeats.
+std::vector<std::pair<int, int>> orderedUniquePairs(const std::vector<std::pair<int, int>>& pairs) {
+  std::vector<std::pair<int, int>> ordered;
+  ordered.reserve(pairs.size());
+  for (const auto& [i, j] : pairs)
+    if (i != j) ordered.emplace_back(std::min(i, j), std::max(i, j));
+  std::sort(ordered.begin(), ordered.end());
+  ordered.erase(std::unique(ordered.begin(), ordered.end()), ordered.end());
+  return ordered;
+}
+
+}  // namespace
+
+void SystemMatrix::setPattern(int vertexCount, const std::vector<std::pair<int, int>>& coupledPairs,
+                              const std::vector<std::pair<int, int>>& weaklyCoupledPairs) {
+  const std::vector<std::pair<int, int>> strong = orderedUniquePairs(coupledPairs);
+  const std::vector<std::pair<int, int>> weak = orderedUniquePairs(weaklyCoupledPairs);
+  weakPairs_.clear();
+  std::set_difference(weak.begin(), weak.end(), strong.begin(), strong.end(), std::back_inserter(weakPairs_));
+
   std::vector<Eigen::Triplet<double, int>> entries;
-  entries.reserve(9 * (vertexCount + 2 * coupledPairs.size()));
+  entries.reserve(9 * (vertexCount + 2 * (strong.size() + weakPairs_.size())));
   auto addBlockEntries = [&](int i, int j) {
     for (int c = 0; c < 3; ++c)
       for (int r = 0; r < 3; ++r) entries.emplace_back(3 * i + r, 3 * j + c, 0.0);
   };
   for (int i = 0; i < vertexCount; ++i) addBlockEntries(i, i);
-  for (const auto& [i, j] : coupledPairs) {
-    if (i == j) continue;
+  for (const auto& [i, j] : strong) {
+    addBlockEntries(i, j);
+    addBlockEntries(j, i);
+  }
+  for (const auto& [i, j] : weakPairs_) {
     addBlockEntries(i, j);
     addBlockEntries(j, i);
   }
   matrix_.resize(3 * vertexCount, 3 * vertexCount);
-  // Duplicated pairs collapse into one entry (summing zeros).
   matrix_.setFromTriplets(entries.begin(), entries.end());
   matrix_.makeCompressed();
   vertexCount_ = vertexCount;

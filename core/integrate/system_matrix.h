@@ -17,11 +17,16 @@ class SystemMatrix {
 
   // Builds the pattern: diagonal blocks for every vertex plus both (i,j) and (j,i) blocks for each
   // coupled pair. Full symmetric storage (CG reads both triangles, CHOLMOD the lower one).
-  void setPattern(int vertexCount, const std::vector<std::pair<int, int>>& coupledPairs);
+  // weaklyCoupledPairs are in the pattern too, but known to couple their vertices only weakly
+  // (bending hinge wings, next to the membrane's edges): a preconditioner may drop them.
+  void setPattern(int vertexCount, const std::vector<std::pair<int, int>>& coupledPairs,
+                  const std::vector<std::pair<int, int>>& weaklyCoupledPairs = {});
   bool hasPattern() const { return vertexCount_ > 0; }
   int vertexCount() const { return vertexCount_; }
   // Increases every time the pattern changes (solvers redo their symbolic analysis then).
   int patternVersion() const { return patternVersion_; }
+  // The weakly coupled pairs (i < j) that are not also strongly coupled, sorted, without repeats.
+  const std::vector<std::pair<int, int>>& weakPairs() const { return weakPairs_; }
 
   void setZero();
   // Adds m to block (i, j). The block must be in the pattern.
@@ -39,6 +44,7 @@ class SystemMatrix {
 
  private:
   Sparse matrix_;
+  std::vector<std::pair<int, int>> weakPairs_;
   int vertexCount_ = 0;
   int patternVersion_ = 0;
 };

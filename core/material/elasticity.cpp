@@ -96,31 +96,28 @@ double halfQuadratic(const Coefficients& c, const Vec3& e) {
   return c[0] * e[0] * e[0] + 2 * c[1] * e[0] * e[1] + c[2] * e[1] * e[1] + 0.5 * c[3] * e[2] * e[2];
 }
 
-struct UsableSamples {
-  Coefficients zeroStrain;
-  std::array<Coefficients, 5> directions;
-  Coefficients directionMean;  // Lavg: integral mean of the piecewise-linear L over [0, 90] deg
-};
-
-UsableSamples usableSamples(const MeasuredElasticity& measured) {
-  UsableSamples out;
-  out.zeroStrain = usableSample(measured.zeroStrain);
-  constexpr std::array<double, 5> kTrapezoid{0.125, 0.25, 0.25, 0.25, 0.125};
-  out.directionMean.setZero();
-  for (int i = 0; i < 5; ++i) {
-    out.directions[i] = usableSample(measured.directions[i]);
-    out.directionMean += kTrapezoid[i] * out.directions[i];
-  }
-  return out;
+// Eq. 2.11: E = Eh/(1-nu^2) [[1, nu, 0], [nu, 1, 0], [0, 0, (1-nu)/2]], stiffnessScale applied.
+Mat3 isotropicMatrix(const ElasticitySettings& settings) {
+  const double nu = settings.poissonRatio;
+  const double factor = settings.stiffnessScale * settings.youngModulus / (1.0 - nu * nu);
+  Mat3 e;
+  e << 1, nu, 0, nu, 1, 0, 0, 0, 0.5 * (1.0 - nu);
+  return factor * e;
 }
 
 // ---- The interpolation coordinates q = (s, t, w) as functions of the strain -------------------
+//
+// This runs for every triangle at every step, so it is written with plain doubles: Eigen evaluates
+// its 3-vectors as a 2-wide packet plus a scalar, and reloading a temporary stored as scalars
+// with packets stalls the CPU (failed store forwarding) for longer than the arithmetic takes.
 
-// Value, gradient and Hessian of one coordinate with respect to (h, b, m).
+// Value, gradient and Hessian of one coordinate with respect to (h, b, m). A coordinate held at a
+// clamp, or undefined, has zero derivatives: `varies` is false and grad and hess are not set.
 struct Coordinate {
   double value = 0.0;
-  Vec3 grad = Vec3::Zero();
-  Mat3 hess = Mat3::Zero();
+  bool varies = false;
+  double grad[3];
+  double hess[3][3];  // symmetric, both triangles set
 };
 
 struct InterpolationCoordinates {
@@ -137,16 +134,20 @@ InterpolationCoordinates interpolationCoordinates(const Vec3& e, double referenc
   const double d = std::sqrt(h * h + b * b);  // strains are O(1): no overflow to guard against
   const bool hasDirection = d > kTinyGap;
 
-  // d and its derivatives on the (h, b) block; zero (the subgradient mean) at the cone tip.
-  Vec3 gradD = Vec3::Zero();
-  Mat3 hessD = Mat3::Zero();
+  // d and its derivatives on the (h, b) block (the m row and column are zero); zero (the
+  // subgradient mean) at the cone tip.
+  double gradD[2] = {0.0, 0.0};
+  double hessD[2][2] = {{0.0, 0.0}, {0.0, 0.0}};
+  // (Divisions are written as products with one reciprocal: a division costs several products.)
+  const double inverseD = hasDirection ? 1.0 / d : 0.0;
   if (hasDirection && order >= 1) {
-    gradD << h / d, b / d, 0.0;
+    gradD[0] = h * inverseD;
+    gradD[1] = b * inverseD;
     if (order >= 2) {
-      const double d3 = d * d * d;
-      hessD(0, 0) = b * b / d3;
-      hessD(1, 1) = h * h / d3;
-      hessD(0, 1) = hessD(1, 0) = -h * b / d3;
+      const double inverseD3 = inverseD * inverseD * inverseD;
+      hessD[0][0] = b * b * inverseD3;
+      hessD[1][1] = h * h * inverseD3;
+      hessD[0][1] = hessD[1][0] = -h * b * inverseD3;
     }
   }
 
@@ -157,20 +158,21 @@ InterpolationCoordinates interpolationCoordinates(const Vec3& e, double referenc
   // r = kStretchRounding by the cubic d~ = 2 d^2/r - d^3/r^2: C1 at d = r, zero with zero slope at
   // d = 0 (so s stays 0 at rest) and smooth in (h, b), which keeps the tangent bounded.
   double roundedD = d;
-  Vec3 gradRoundedD = gradD;
-  Mat3 hessRoundedD = hessD;
+  double gradRoundedD[2] = {gradD[0], gradD[1]};
+  double hessRoundedD[2][2] = {{hessD[0][0], hessD[0][1]}, {hessD[1][0], hessD[1][1]}};
   if (d < kStretchRounding) {
     const double r = kStretchRounding;
     roundedD = 2.0 * d * d / r - d * d * d / (r * r);
     const double f = 4.0 / r - 3.0 * d / (r * r);  // d~ = f-weighted: grad d~ = f (h, b)
-    gradRoundedD << f * h, f * b, 0.0;
-    hessRoundedD.setZero();
-    hessRoundedD(0, 0) = hessRoundedD(1, 1) = f;
+    gradRoundedD[0] = f * h;
+    gradRoundedD[1] = f * b;
+    hessRoundedD[0][0] = hessRoundedD[1][1] = f;
+    hessRoundedD[0][1] = hessRoundedD[1][0] = 0.0;
     if (d > 0.0) {
       const double c = 3.0 / (r * r * d);
-      hessRoundedD(0, 0) -= c * h * h;
-      hessRoundedD(1, 1) -= c * b * b;
-      hessRoundedD(0, 1) = hessRoundedD(1, 0) = -c * h * b;
+      hessRoundedD[0][0] -= c * h * h;
+      hessRoundedD[1][1] -= c * b * b;
+      hessRoundedD[0][1] = hessRoundedD[1][0] = -c * h * b;
     }
   }
   const double mu = m + roundedD;
@@ -181,10 +183,20 @@ InterpolationCoordinates interpolationCoordinates(const Vec3& e, double referenc
     const double lambda = std::sqrt(mu);
     q.stretch.value = (lambda - 1.0) / span;
     if (order >= 1) {
-      const Vec3 gradMu = gradRoundedD + Vec3(0.0, 0.0, 1.0);
-      q.stretch.grad = gradMu / (2.0 * lambda * span);
+      Coordinate& s = q.stretch;
+      s.varies = true;
+      const double gradMu[3] = {gradRoundedD[0], gradRoundedD[1], 1.0};
+      const double gradScale = 1.0 / (2.0 * lambda * span);  // grad s = grad mu / (2 lambda r)
+      for (int i = 0; i < 3; ++i) s.grad[i] = gradMu[i] * gradScale;
       if (order >= 2) {
-        q.stretch.hess = (hessRoundedD / (2.0 * lambda) - gradMu * gradMu.transpose() / (4.0 * lambda * mu)) / span;
+        // hess s = (hess mu / (2 lambda) - grad mu grad mu^T / (4 lambda mu)) / r.
+        const double outerScale = 1.0 / (4.0 * lambda * mu * span);
+        for (int i = 0; i < 3; ++i) {
+          for (int j = i; j < 3; ++j) {
+            const double hessMu = i < 2 && j < 2 ? hessRoundedD[i][j] : 0.0;
+            s.hess[i][j] = s.hess[j][i] = hessMu * gradScale - gradMu[i] * gradMu[j] * outerScale;
+          }
+        }
       }
     }
   }
@@ -197,13 +209,18 @@ InterpolationCoordinates interpolationCoordinates(const Vec3& e, double referenc
   const double sign = b < 0.0 ? -1.0 : 1.0;
   q.angle.value = k * std::atan2(y, h);
   if (order >= 1) {
-    const double d2 = d * d;
-    q.angle.grad << -k * y / d2, k * sign * h / d2, 0.0;
+    Coordinate& t = q.angle;
+    t.varies = true;
+    const double inverseD2 = inverseD * inverseD;
+    t.grad[0] = -k * y * inverseD2;
+    t.grad[1] = k * sign * h * inverseD2;
+    t.grad[2] = 0.0;
     if (order >= 2) {
-      const double d4 = d2 * d2;
-      q.angle.hess(0, 0) = 2.0 * k * h * y / d4;
-      q.angle.hess(1, 1) = -q.angle.hess(0, 0);
-      q.angle.hess(0, 1) = q.angle.hess(1, 0) = k * sign * (y * y - h * h) / d4;
+      const double inverseD4 = inverseD2 * inverseD2;
+      t.hess[0][0] = 2.0 * k * h * y * inverseD4;
+      t.hess[1][1] = -t.hess[0][0];
+      t.hess[0][1] = t.hess[1][0] = k * sign * (y * y - h * h) * inverseD4;
+      t.hess[0][2] = t.hess[1][2] = t.hess[2][0] = t.hess[2][1] = t.hess[2][2] = 0.0;
     }
   }
 
@@ -214,11 +231,17 @@ InterpolationCoordinates interpolationCoordinates(const Vec3& e, double referenc
   } else {
     q.direction.value = x * x * (3.0 - 2.0 * x);
     if (order >= 1) {
+      Coordinate& w = q.direction;
+      w.varies = true;
       const double slope = 6.0 * x * (1.0 - x) / kEquibiaxialBlend;
-      q.direction.grad = slope * gradD;
+      w.grad[0] = slope * gradD[0];
+      w.grad[1] = slope * gradD[1];
+      w.grad[2] = 0.0;
       if (order >= 2) {
         const double curvature = (6.0 - 12.0 * x) / (kEquibiaxialBlend * kEquibiaxialBlend);
-        q.direction.hess = curvature * gradD * gradD.transpose() + slope * hessD;
+        for (int i = 0; i < 2; ++i)
+          for (int j = 0; j < 2; ++j) w.hess[i][j] = curvature * gradD[i] * gradD[j] + slope * hessD[i][j];
+        w.hess[0][2] = w.hess[1][2] = w.hess[2][0] = w.hess[2][1] = w.hess[2][2] = 0.0;
       }
     }
   }
@@ -231,7 +254,7 @@ struct DirectionRow {
   Coefficients slope;
 };
 
-DirectionRow directionRow(const UsableSamples& samples, double t) {
+DirectionRow directionRow(const PreparedElasticity& samples, double t) {
   const int segment = std::clamp(static_cast<int>(std::floor(t)), 0, 3);
   const double f = std::clamp(t - segment, 0.0, 1.0);
   const Coefficients& lo = samples.directions[segment];
@@ -240,28 +263,37 @@ DirectionRow directionRow(const UsableSamples& samples, double t) {
 }
 
 // J^T v: a gradient in (h, b, m) as a gradient in e = (e_uu, e_vv, g).
-Vec3 toStrainGradient(const Vec3& v) { return Vec3(v[0] + v[2], v[2] - v[0], v[1]); }
+void toStrainGradient(const double v[3], double out[3]) {
+  out[0] = v[0] + v[2];
+  out[1] = v[2] - v[0];
+  out[2] = v[1];
+}
 
-Mat3 hbmJacobian() {
-  Mat3 j;
-  j << 1, -1, 0, 0, 0, 1, 1, 1, 0;
-  return j;
+// J^T K J for a symmetric K in (h, b, m): a Hessian in (h, b, m) as a Hessian in e. The columns of
+// J select h + m (for e_uu), m - h (for e_vv) and b (for g), so the product needs only sums.
+void toStrainHessian(const double k[3][3], double out[3][3]) {
+  const double kUU[3] = {k[0][0] + k[0][2], k[1][0] + k[1][2], k[2][0] + k[2][2]};  // K J e_uu-column
+  const double kVV[3] = {k[0][2] - k[0][0], k[1][2] - k[1][0], k[2][2] - k[2][0]};  // K J e_vv-column
+  out[0][0] = kUU[0] + kUU[2];
+  out[1][1] = kVV[2] - kVV[0];
+  out[2][2] = k[1][1];
+  out[0][1] = out[1][0] = kVV[0] + kVV[2];
+  out[0][2] = out[2][0] = k[0][1] + k[2][1];
+  out[1][2] = out[2][1] = k[2][1] - k[0][1];
 }
 
 // ---- The two models -----------------------------------------------------------------------------
 
-ElasticityResponse evaluateIsotropic(const ElasticitySettings& settings, const Vec3& e) {
+ElasticityResponse evaluateIsotropic(const PreparedElasticity& law, const Vec3& e) {
   ElasticityResponse r;
-  r.tangent = elasticityMatrix(settings, e);  // constant E, Eq. 2.11 (already scaled)
-  r.stress = r.tangent * e;                    // Eq. 2.12
+  r.tangent = law.isotropicMatrix;  // constant E, Eq. 2.11 (already scaled)
+  r.stress = r.tangent * e;         // Eq. 2.12
   r.energyDensity = 0.5 * e.dot(r.stress);
   return r;
 }
 
-ElasticityResponse evaluateMeasured(const ElasticitySettings& settings, const Vec3& e, bool wantTangent) {
-  const UsableSamples samples = usableSamples(settings.measured);
-  const InterpolationCoordinates q =
-      interpolationCoordinates(e, settings.measured.referenceStretch, wantTangent ? 2 : 1);
+ElasticityResponse evaluateMeasured(const PreparedElasticity& samples, const Vec3& strain, bool wantTangent) {
+  const InterpolationCoordinates q = interpolationCoordinates(strain, samples.referenceStretch, wantTangent ? 2 : 1);
   const double s = q.stretch.value;
   const double w = q.direction.value;
   const DirectionRow row = directionRow(samples, q.angle.value);
@@ -274,61 +306,90 @@ ElasticityResponse evaluateMeasured(const ElasticitySettings& settings, const Ve
   const std::array<Coefficients, 3> dC{stretched - zero, s * w * row.slope, s * (row.value - mean)};
   const std::array<const Coordinate*, 3> coords{&q.stretch, &q.angle, &q.direction};
 
-  ElasticityResponse r;
-  const Vec3 ce = apply(c, e);
-  r.energyDensity = 0.5 * e.dot(ce);
-  r.stress = ce;
-  std::array<Vec3, 3> gradE;  // grad_e q_j
-  std::array<double, 3> p;    // P_j = 1/2 e^T C_j e
+  // Only the coordinates that vary contribute below (the others have zero derivatives).
+  const double e[3] = {strain[0], strain[1], strain[2]};
+  const double ce[3] = {2 * (c[0] * e[0] + c[1] * e[1]), 2 * (c[1] * e[0] + c[2] * e[1]), c[3] * e[2]};  // C e
+  double stress[3] = {ce[0], ce[1], ce[2]};
+  double gradE[3][3];  // grad_e q_j
+  double p[3];         // P_j = 1/2 e^T C_j e
   for (int j = 0; j < 3; ++j) {
-    gradE[j] = toStrainGradient(coords[j]->grad);
-    p[j] = halfQuadratic(dC[j], e);
-    r.stress += p[j] * gradE[j];
+    p[j] = halfQuadratic(dC[j], strain);
+    if (!coords[j]->varies) continue;
+    toStrainGradient(coords[j]->grad, gradE[j]);
+    for (int i = 0; i < 3; ++i) stress[i] += p[j] * gradE[j][i];
   }
 
-  if (wantTangent) {
-    Mat3 mixed = Mat3::Zero();  // sum_j (C_j e) grad q_j^T
-    for (int j = 0; j < 3; ++j) mixed += apply(dC[j], e) * gradE[j].transpose();
-    // Second-derivative terms, gathered in (h, b, m) and mapped once.
-    Mat3 curvature = p[0] * q.stretch.hess + p[1] * q.angle.hess + p[2] * q.direction.hess;
-    auto addCross = [&](const Coefficients& cjk, const Coordinate& qj, const Coordinate& qk) {
-      const Mat3 outer = qj.grad * qk.grad.transpose();
-      curvature += halfQuadratic(cjk, e) * (outer + outer.transpose());
-    };
-    addCross(w * row.slope, q.stretch, q.angle);           // C_st
-    addCross(row.value - mean, q.stretch, q.direction);    // C_sw
-    addCross(s * row.slope, q.angle, q.direction);         // C_tw
-    const Mat3 j = hbmJacobian();
-    r.tangent = toMatrix(c) + mixed + mixed.transpose() + j.transpose() * curvature * j;
-  }
+  const double scale = samples.stiffnessScale;
+  ElasticityResponse r;
+  r.energyDensity = 0.5 * (e[0] * ce[0] + e[1] * ce[1] + e[2] * ce[2]) * scale;
+  for (int i = 0; i < 3; ++i) r.stress[i] = stress[i] * scale;
+  if (!wantTangent) return r;
 
-  const double scale = settings.stiffnessScale;
-  r.energyDensity *= scale;
-  r.stress *= scale;
-  r.tangent *= scale;
+  double mixed[3][3] = {};      // sum_j (C_j e) grad q_j^T
+  double curvature[3][3] = {};  // the second-derivative terms, gathered in (h, b, m) and mapped once
+  for (int j = 0; j < 3; ++j) {
+    if (!coords[j]->varies) continue;
+    const Vec3 cje = apply(dC[j], strain);
+    for (int a = 0; a < 3; ++a) {
+      for (int b = 0; b < 3; ++b) {
+        mixed[a][b] += cje[a] * gradE[j][b];
+        curvature[a][b] += p[j] * coords[j]->hess[a][b];
+      }
+    }
+  }
+  auto addCross = [&](const Coefficients& cjk, const Coordinate& qj, const Coordinate& qk) {
+    if (!qj.varies || !qk.varies) return;
+    const double pjk = halfQuadratic(cjk, strain);
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < 3; ++b) curvature[a][b] += pjk * (qj.grad[a] * qk.grad[b] + qj.grad[b] * qk.grad[a]);
+  };
+  addCross(w * row.slope, q.stretch, q.angle);         // C_st
+  addCross(row.value - mean, q.stretch, q.direction);  // C_sw
+  addCross(s * row.slope, q.angle, q.direction);       // C_tw
+  double curvatureE[3][3];
+  toStrainHessian(curvature, curvatureE);
+  const double cm[3][3] = {{2 * c[0], 2 * c[1], 0.0}, {2 * c[1], 2 * c[2], 0.0}, {0.0, 0.0, c[3]}};  // C itself
+  for (int a = 0; a < 3; ++a)
+    for (int b = 0; b < 3; ++b) r.tangent(a, b) = (cm[a][b] + mixed[a][b] + mixed[b][a] + curvatureE[a][b]) * scale;
   return r;
 }
 
 }  // namespace
 
+PreparedElasticity prepareElasticity(const ElasticitySettings& settings) {
+  PreparedElasticity law;
+  law.model = settings.model;
+  law.stiffnessScale = settings.stiffnessScale;
+  law.referenceStretch = settings.measured.referenceStretch;
+  if (settings.model == ElasticitySettings::Model::Isotropic) {
+    law.isotropicMatrix = isotropicMatrix(settings);
+    return law;
+  }
+  law.zeroStrain = usableSample(settings.measured.zeroStrain);
+  constexpr std::array<double, 5> kTrapezoid{0.125, 0.25, 0.25, 0.25, 0.125};
+  law.directionMean.setZero();
+  for (int i = 0; i < 5; ++i) {
+    law.directions[i] = usableSample(settings.measured.directions[i]);
+    law.directionMean += kTrapezoid[i] * law.directions[i];
+  }
+  return law;
+}
+
+ElasticityResponse evaluateElasticity(const PreparedElasticity& law, const Eigen::Vector3d& strain, bool wantTangent) {
+  if (law.model == ElasticitySettings::Model::Isotropic) return evaluateIsotropic(law, strain);
+  return evaluateMeasured(law, strain, wantTangent);
+}
+
 ElasticityResponse evaluateElasticity(const ElasticitySettings& settings, const Eigen::Vector3d& strain,
                                       bool wantTangent) {
-  if (settings.model == ElasticitySettings::Model::Isotropic) return evaluateIsotropic(settings, strain);
-  return evaluateMeasured(settings, strain, wantTangent);
+  return evaluateElasticity(prepareElasticity(settings), strain, wantTangent);
 }
 
 Eigen::Matrix3d elasticityMatrix(const ElasticitySettings& settings, const Eigen::Vector3d& strain) {
-  if (settings.model == ElasticitySettings::Model::Isotropic) {
-    // Eq. 2.11: E = Eh/(1-nu^2) [[1, nu, 0], [nu, 1, 0], [0, 0, (1-nu)/2]].
-    const double nu = settings.poissonRatio;
-    const double factor = settings.stiffnessScale * settings.youngModulus / (1.0 - nu * nu);
-    Mat3 e;
-    e << 1, nu, 0, nu, 1, 0, 0, 0, 0.5 * (1.0 - nu);
-    return factor * e;
-  }
+  if (settings.model == ElasticitySettings::Model::Isotropic) return isotropicMatrix(settings);
   assert(settings.measured.referenceStretch > 1.0);
-  const UsableSamples samples = usableSamples(settings.measured);
-  const InterpolationCoordinates q = interpolationCoordinates(strain, settings.measured.referenceStretch, 0);
+  const PreparedElasticity samples = prepareElasticity(settings);
+  const InterpolationCoordinates q = interpolationCoordinates(strain, samples.referenceStretch, 0);
   const double s = q.stretch.value;
   const double w = q.direction.value;
   const Coefficients l = directionRow(samples, q.angle.value).value;

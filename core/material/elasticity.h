@@ -45,7 +45,25 @@ struct ElasticityResponse {
   Eigen::Matrix3d tangent = Eigen::Matrix3d::Zero();  // d^2 psi/de^2 (N/m), symmetric, may be indefinite
 };
 
+// The settings in the form every evaluation reads, prepared once for many strains (a cloth step
+// evaluates thousands of triangles with the same settings): the measured samples clamped and
+// limited (decision 2 in elasticity.cpp) with their direction mean, or the constant matrix E of
+// Eq. 2.11. Evaluating with it gives the same numbers as evaluating with the settings.
+struct PreparedElasticity {
+  ElasticitySettings::Model model = ElasticitySettings::Model::Isotropic;
+  double stiffnessScale = 1.0;
+  double referenceStretch = 7.0 / 6.0;
+  Eigen::Matrix3d isotropicMatrix = Eigen::Matrix3d::Zero();  // E of Eq. 2.11, stiffnessScale applied (N/m)
+  // Usable measured samples (c11, c12, c22, c33) in N/m, before stiffnessScale.
+  Eigen::Vector4d zeroStrain = Eigen::Vector4d::Zero();
+  std::array<Eigen::Vector4d, 5> directions{};
+  Eigen::Vector4d directionMean = Eigen::Vector4d::Zero();  // Lavg, the mean of L over [0, 90] deg
+};
+
+PreparedElasticity prepareElasticity(const ElasticitySettings& settings);
+
 // Evaluates psi, its gradient and (when wantTangent) its Hessian at the strain e.
+ElasticityResponse evaluateElasticity(const PreparedElasticity& law, const Eigen::Vector3d& strain, bool wantTangent);
 ElasticityResponse evaluateElasticity(const ElasticitySettings& settings, const Eigen::Vector3d& strain,
                                       bool wantTangent);
 

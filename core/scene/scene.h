@@ -77,6 +77,7 @@ struct ForcesSpec {
 
 enum class IntegratorKind { LinearizedBackwardEuler, Newton, SymplecticEuler };
 enum class LinearSolverKind { ConjugateGradient, Cholmod };
+enum class PreconditionerKind { BlockJacobi, LaggedCholesky, LaggedExactCholesky };
 
 struct SolverSpec {
   double dt = 1.0 / 60.0;         // time step (s)
@@ -85,7 +86,8 @@ struct SolverSpec {
   int newtonMaxIterations = 10;   // Newton: iteration bound per (sub)step
   double newtonTolerance = 1e-6;  // Newton: stop when the max velocity change of an iteration is below this (m/s)
   LinearSolverKind linearSolver = LinearSolverKind::ConjugateGradient;
-  double linearTolerance = 1e-6;  // CG: relative residual |r|/|b|
+  PreconditionerKind linearPreconditioner = PreconditionerKind::LaggedCholesky;  // CG: see integrate/linear_solver.h
+  double linearTolerance = 1e-6;  // CG: stop at |r| <= tolerance * max(|b|, |one step's external impulse| in b's units)
   int linearMaxIterations = 1000; // CG: iteration bound
   int threads = 1;                // worker threads for force assembly (results do not depend on it)
 };

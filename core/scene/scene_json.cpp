@@ -459,6 +459,15 @@ IntegratorKind parseIntegrator(const FieldReader& r) {
          "unknown integrator \"" + name + "\"; expected linearized_backward_euler, newton or symplectic_euler");
 }
 
+PreconditionerKind parsePreconditioner(const FieldReader& r) {
+  const std::string name = r.stringValue(r.at("preconditioner"), r.pointer("preconditioner"));
+  if (name == "block_jacobi") return PreconditionerKind::BlockJacobi;
+  if (name == "lagged_cholesky") return PreconditionerKind::LaggedCholesky;
+  if (name == "lagged_exact_cholesky") return PreconditionerKind::LaggedExactCholesky;
+  r.fail(r.pointer("preconditioner"), "unknown preconditioner \"" + name +
+                                          "\"; expected lagged_cholesky, lagged_exact_cholesky or block_jacobi");
+}
+
 SolverSpec parseSolver(const json& j, const std::string& pointer, const Context& ctx) {
   const FieldReader r(j, pointer, ctx.file, {"dt", "substeps", "integrator", "newton", "linear_solver", "threads"});
   SolverSpec solver;
@@ -472,13 +481,14 @@ SolverSpec parseSolver(const json& j, const std::string& pointer, const Context&
   }
   if (r.has("linear_solver")) {
     const FieldReader l(r.at("linear_solver"), r.pointer("linear_solver"), ctx.file,
-                        {"type", "tolerance", "max_iterations"});
+                        {"type", "preconditioner", "tolerance", "max_iterations"});
     if (l.has("type")) {
       const std::string type = l.stringValue(l.at("type"), l.pointer("type"));
       if (type == "cg") solver.linearSolver = LinearSolverKind::ConjugateGradient;
       else if (type == "cholmod") solver.linearSolver = LinearSolverKind::Cholmod;
       else l.fail(l.pointer("type"), "unknown linear solver \"" + type + "\"; expected cg or cholmod");
     }
+    if (l.has("preconditioner")) solver.linearPreconditioner = parsePreconditioner(l);
     solver.linearTolerance = l.number("tolerance", solver.linearTolerance, Bound::NonNegative);
     solver.linearMaxIterations = l.integer("max_iterations", solver.linearMaxIterations, 1);
   }

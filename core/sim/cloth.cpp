@@ -121,11 +121,12 @@ void rebuildElements(Cloth& cloth) {
   if (bendingEnabled(cloth.material.bending)) cloth.hinges = buildBendingHinges(cloth.mesh, cloth.weftAngleRad);
 }
 
-std::vector<std::pair<int, int>> coupledVertexPairs(const Cloth& cloth) {
-  std::vector<std::pair<int, int>> pairs;
-  pairs.reserve(cloth.mesh.edges.size() + cloth.hinges.size());
-  for (const Edge& e : cloth.mesh.edges) pairs.emplace_back(e.v[0], e.v[1]);
-  for (const BendingHinge& h : cloth.hinges) pairs.emplace_back(h.v[2], h.v[3]);
+CoupledVertexPairs coupledVertexPairs(const Cloth& cloth) {
+  CoupledVertexPairs pairs;
+  pairs.edges.reserve(cloth.mesh.edges.size());
+  pairs.hingeWings.reserve(cloth.hinges.size());
+  for (const Edge& e : cloth.mesh.edges) pairs.edges.emplace_back(e.v[0], e.v[1]);
+  for (const BendingHinge& h : cloth.hinges) pairs.hingeWings.emplace_back(h.v[2], h.v[3]);
   return pairs;
 }
 

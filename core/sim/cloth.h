@@ -46,7 +46,13 @@ Vec3 pinOffset(const std::vector<PinKeyframe>& script, double t);
 void pinTargets(const Cloth& cloth, double t, std::vector<int>& outVertices, std::vector<Vec3>& outPositions,
                 StageProfile& profile);
 
-// Vertex pairs coupled by an element (triangle edges and hinge wings): the system matrix pattern.
-std::vector<std::pair<int, int>> coupledVertexPairs(const Cloth& cloth);
+// Vertex pairs coupled by an element: the system matrix pattern. The two vertices of a triangle
+// edge are coupled by the membrane; the wing vertices of a bending hinge only by bending, which is
+// orders of magnitude weaker (a preconditioner may leave those couplings out).
+struct CoupledVertexPairs {
+  std::vector<std::pair<int, int>> edges;
+  std::vector<std::pair<int, int>> hingeWings;
+};
+CoupledVertexPairs coupledVertexPairs(const Cloth& cloth);
 
 }  // namespace weft

@@ -120,7 +120,7 @@ TEST_F(WeftCli, RunWritesMetricsWithEveryDocumentedKey) {
                           "state_hash", "threads", "dt", "substeps"}) {
     EXPECT_TRUE(m.contains(key)) << "metrics.json lacks " << key;
   }
-  for (const char* key : {"integrator", "linear_solver", "linear_iterations", "last_linear_residual",
+  for (const char* key : {"integrator", "linear_solver", "preconditioner", "linear_iterations", "last_linear_residual",
                           "max_linear_residual", "newton_iterations", "last_newton_residual", "linear_solve_failures"}) {
     EXPECT_TRUE(m["solver"].contains(key)) << "metrics.json lacks solver." << key;
   }

@@ -127,6 +127,7 @@ TEST(SceneJson, DefaultsAreTheStructDefaults) {
   EXPECT_EQ(scene.solver.substeps, solver.substeps);
   EXPECT_EQ(scene.solver.integrator, solver.integrator);
   EXPECT_EQ(scene.solver.linearSolver, solver.linearSolver);
+  EXPECT_EQ(scene.solver.linearPreconditioner, solver.linearPreconditioner);
   EXPECT_EQ(scene.solver.newtonMaxIterations, solver.newtonMaxIterations);
   EXPECT_EQ(scene.solver.threads, solver.threads);
   EXPECT_EQ(scene.forces.gravity, forces.gravity);
@@ -167,6 +168,19 @@ TEST(SceneJson, OverridesCanAddAKeyTheFileLeavesOut) {
   EXPECT_EQ(scene.solver.substeps, 3);
   EXPECT_DOUBLE_EQ(scene.solver.newtonTolerance, 1e-3);
   EXPECT_EQ(scene.forces.wind.velocity, Vec3(1, 0, 0));
+}
+
+TEST(SceneJson, PreconditionerIsReadByName) {
+  TempDir dir;
+  const fs::path file = dir.write("s.json", minimalScene().dump());
+  const std::pair<const char*, PreconditionerKind> names[] = {
+      {"lagged_cholesky", PreconditionerKind::LaggedCholesky},
+      {"lagged_exact_cholesky", PreconditionerKind::LaggedExactCholesky},
+      {"block_jacobi", PreconditionerKind::BlockJacobi}};
+  for (const auto& [name, kind] : names) {
+    const Scene scene = loadScene(file, {std::string("solver.linear_solver.preconditioner=") + name});
+    EXPECT_EQ(scene.solver.linearPreconditioner, kind) << name;
+  }
 }
 
 TEST(SceneJson, ApplyOverridesEditsTheJson) {
@@ -292,6 +306,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"UnknownIntegrator", R"({"solver": {"integrator": "verlet"}})", {}, "/solver/integrator", "verlet"},
         BadCase{"UnknownLinearSolver", R"({"solver": {"linear_solver": {"type": "lu"}}})", {},
                 "/solver/linear_solver/type", "cholmod"},
+        BadCase{"UnknownPreconditioner", R"({"solver": {"linear_solver": {"preconditioner": "ilu"}}})", {},
+                "/solver/linear_solver/preconditioner", "lagged_cholesky"},
         BadCase{"NegativeFrames", R"({"output": {"frames": -1}})", {}, "/output/frames", ">= 0"},
         BadCase{"ZeroFps", R"({"output": {"fps": 0}})", {}, "/output/fps", "positive"},
         BadCase{"GustOutOfRange", R"({"forces": {"wind": {"gust_amplitude": 2}}})", {},

@@ -1,0 +1,36 @@
+#pragma once
+// The preconditioned conjugate gradient method for A x = b with A symmetric positive definite.
+//
+// Stopping rule: |r| <= tolerance * max(|b|, rhsNormFloor), r = b - A x (the recursively updated
+// residual). The floor is a scale of the right-hand side that the caller knows to be meaningful
+// (the integrators pass the norm of one step's external impulse): near rest |b| itself becomes
+// tiny, and a purely relative criterion would then demand a far more exact answer than any step
+// in motion gets, costing hundreds of iterations for nothing. With rhsNormFloor = 0 the rule is
+// the plain relative one.
+//
+// x holds the initial guess on entry (a warm start from the previous step); if it already meets the
+// tolerance the solve returns at once, without touching the preconditioner. The work vectors are
+// members: no allocation once the size is known. Deterministic: a fixed sequence of operations.
+#include <Eigen/Core>
+
+#include "integrate/linear_solver.h"
+#include "integrate/preconditioner.h"
+#include "integrate/system_matrix.h"
+
+namespace weft {
+
+class PreconditionedConjugateGradient {
+ public:
+  PreconditionedConjugateGradient(double tolerance, int maxIterations)
+      : tolerance_(tolerance), maxIterations_(maxIterations) {}
+
+  LinearSolveResult solve(const SystemMatrix& A, const Eigen::VectorXd& b, double rhsNormFloor,
+                          Preconditioner& preconditioner, Eigen::VectorXd& x);
+
+ private:
+  double tolerance_;
+  int maxIterations_;
+  Eigen::VectorXd residual_, preconditioned_, direction_, product_;
+};
+
+}  // namespace weft
