@@ -23,8 +23,9 @@ double NewtonIntegrator::potential(const Cloth& cloth, const std::vector<Vec3>& 
     damping += in.damping.mass * cloth.mesh.mass[i] * (x[i] - x0_[i]).squaredNorm();
   }
   if (in.damping.stiffness > 0.0) {
-    const Eigen::VectorXd dx = flat(x) - flat(x0_);
-    damping += dx.dot(dampingHessian_ * dx);
+    displacement_ = flat(x) - flat(x0_);
+    dampedDisplacement_.noalias() = dampingHessian_ * displacement_;
+    damping += displacement_.dot(dampedDisplacement_);
   }
   return inertia / (2.0 * h * h) + elastic.membraneEnergy + elastic.bendingEnergy - external + damping / (2.0 * h);
 }
@@ -40,7 +41,8 @@ void NewtonIntegrator::advance(Cloth& cloth, const StepInputs& in, StageProfile&
   x0_ = mesh.x;
   inertialTarget_.resize(n);
   for (int i = 0; i < n; ++i) inertialTarget_[i] = mesh.x[i] + h * mesh.v[i];
-  std::vector<Vec3> x = inertialTarget_;  // start from the inertial prediction
+  std::vector<Vec3>& x = current_;
+  x = inertialTarget_;  // start from the inertial prediction
   for (size_t k = 0; k < system_.pinnedVertices.size(); ++k) x[system_.pinnedVertices[k]] = system_.pinnedTargets[k];
 
   ElasticOptions options;
@@ -76,10 +78,10 @@ void NewtonIntegrator::advance(Cloth& cloth, const StepInputs& in, StageProfile&
         damping += in.damping.mass * mesh.mass[i] * moved.squaredNorm();
       }
       if (in.damping.stiffness > 0.0) {
-        const Eigen::VectorXd dx = flat(x) - flat(x0_);
-        const Eigen::VectorXd Ddx = dampingHessian_ * dx;
-        gradient_ += Ddx / h;
-        damping += dx.dot(Ddx);
+        displacement_ = flat(x) - flat(x0_);
+        dampedDisplacement_.noalias() = dampingHessian_ * displacement_;
+        gradient_ += dampedDisplacement_ / h;
+        damping += displacement_.dot(dampedDisplacement_);
         system_.matrix.matrix() += dampingHessian_ / h;
       }
       phi = inertia / (2.0 * h * h) + elastic.membraneEnergy + elastic.bendingEnergy - external + damping / (2.0 * h);

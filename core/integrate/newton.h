@@ -22,7 +22,9 @@ class NewtonIntegrator final : public Integrator {
   ImplicitSystem system_;
   int maxIterations_;
   double tolerance_;
-  std::vector<Vec3> x0_, inertialTarget_, trial_;
+  // Work arrays kept between steps so that a step allocates nothing once sized.
+  std::vector<Vec3> x0_, inertialTarget_, current_, trial_;
+  Eigen::VectorXd displacement_, dampedDisplacement_;
   SystemMatrix::Sparse dampingHessian_;  // beta * H(x0) when stiffness damping is on
   Eigen::VectorXd gradient_, step_;
 };
