@@ -3,15 +3,13 @@
 #include "material/material.h"
 
 #include <algorithm>
-#include <cmath>
 #include <fstream>
-#include <initializer_list>
 #include <set>
-#include <string_view>
 
 #include <nlohmann/json.hpp>
 
 #include "util/input_error.h"
+#include "util/json_fields.h"
 
 namespace weft {
 namespace {
@@ -25,191 +23,92 @@ constexpr std::array<double, 5> kDirectionsDeg{0, 22.5, 45, 67.5, 90};
 constexpr std::array<double, 3> kBendingEdgeDirectionsDeg{0, 45, 90};
 constexpr std::array<double, 5> kBendingCurvaturesPerM{0, 5, 10, 15, 20};
 
-// Where a value sits: the file and its JSON pointer, for error messages.
-struct Location {
-  const std::string& file;
-  std::string pointer;
+// Material messages name the kind of a wrong value ("got a string"), as the format has always done.
+constexpr GotStyle kGot = GotStyle::Kind;
 
-  Location child(std::string_view key) const {
-    std::string escaped;  // RFC 6901: '~' -> "~0", '/' -> "~1"
-    for (char ch : key) {
-      if (ch == '~') escaped += "~0";
-      else if (ch == '/') escaped += "~1";
-      else escaped += ch;
-    }
-    return {file, pointer + "/" + escaped};
-  }
-  Location child(size_t index) const { return {file, pointer + "/" + std::to_string(index)}; }
-
-  [[noreturn]] void fail(const std::string& what) const { throw InputError(file, pointer, what); }
-};
-
-std::string describe(const json& value) {
-  if (value.is_array()) return "an array of " + std::to_string(value.size());
-  return std::string("a ") + value.type_name();
+double stiffnessScale(const FieldReader& r) {
+  return r.number("stiffness_scale", 1.0, Bound::Positive, "the multiplier of every stiffness");
 }
 
-std::string joined(const auto& items) {
-  std::string out;
-  for (const auto& item : items) out += (out.empty() ? "" : ", ") + std::string(item);
-  return out;
-}
-
-void requireObject(const json& value, const Location& at) {
-  if (!value.is_object()) at.fail("expected a JSON object, got " + describe(value));
-}
-
-void rejectUnknownKeys(const json& object, const Location& at, std::initializer_list<const char*> allowed) {
-  for (const auto& item : object.items()) {
-    if (std::none_of(allowed.begin(), allowed.end(), [&](const char* key) { return item.key() == key; })) {
-      at.child(item.key()).fail("unknown key '" + item.key() + "' (allowed here: " + joined(allowed) + ")");
-    }
-  }
-}
-
-const json& requiredField(const json& object, const Location& at, const char* key, const std::string& expected) {
-  const auto it = object.find(key);
-  if (it == object.end()) at.child(key).fail("missing required field '" + std::string(key) + "' (" + expected + ")");
-  return *it;
-}
-
-double finiteNumber(const json& value, const Location& at, const std::string& expected) {
-  if (!value.is_number()) at.fail("expected " + expected + ", got " + describe(value));
-  const double x = value.get<double>();
-  if (!std::isfinite(x)) at.fail("expected a finite number (" + expected + ")");
-  return x;
-}
-
-double numberField(const json& object, const Location& at, const char* key, const std::string& expected) {
-  return finiteNumber(requiredField(object, at, key, expected), at.child(key), expected);
-}
-
-double positiveNumberField(const json& object, const Location& at, const char* key, const std::string& expected) {
-  const double x = numberField(object, at, key, expected);
-  if (x <= 0.0) at.child(key).fail("must be > 0 (" + expected + "), got " + std::to_string(x));
-  return x;
-}
-
-std::string stringField(const json& object, const Location& at, const char* key, const std::string& expected) {
-  const json& value = requiredField(object, at, key, expected);
-  if (!value.is_string() || value.get<std::string>().empty()) {
-    at.child(key).fail("expected a non-empty string (" + expected + "), got " + describe(value));
-  }
-  return value.get<std::string>();
-}
-
-template <size_t N>
-std::array<double, N> numberRow(const json& value, const Location& at, const std::string& expected) {
-  if (!value.is_array() || value.size() != N) {
-    at.fail("expected an array of " + std::to_string(N) + " numbers (" + expected + "), got " + describe(value));
-  }
-  std::array<double, N> row{};
-  for (size_t i = 0; i < N; ++i) row[i] = finiteNumber(value[i], at.child(i), "a number (" + expected + ")");
-  return row;
-}
-
-template <size_t Rows, size_t Cols>
-std::array<std::array<double, Cols>, Rows> numberTable(const json& value, const Location& at,
-                                                       const std::string& expected) {
-  if (!value.is_array() || value.size() != Rows) {
-    at.fail("expected an array of " + std::to_string(Rows) + " rows of " + std::to_string(Cols) + " numbers (" +
-            expected + "), got " + describe(value));
-  }
-  std::array<std::array<double, Cols>, Rows> table{};
-  for (size_t i = 0; i < Rows; ++i) table[i] = numberRow<Cols>(value[i], at.child(i), expected);
-  return table;
-}
-
-// A label field that must hold exactly the given value (units, coefficient names, sample axes).
-void requireExactly(const json& object, const Location& at, const char* key, const json& expected) {
-  const json& value = requiredField(object, at, key, "must be " + expected.dump());
-  if (value != expected) at.child(key).fail("must be exactly " + expected.dump() + ", got " + value.dump());
-}
-
-double stiffnessScale(const json& object, const Location& at) {
-  if (!object.contains("stiffness_scale")) return 1.0;
-  return positiveNumberField(object, at, "stiffness_scale", "a multiplier of every stiffness, > 0");
-}
-
-std::string modelName(const json& object, const Location& at, std::initializer_list<const char*> models) {
-  const std::string expected = "one of: " + joined(models);
-  const std::string model = stringField(object, at, "model", expected);
-  if (std::none_of(models.begin(), models.end(), [&](const char* m) { return model == m; })) {
-    at.child("model").fail("unknown model '" + model + "' (expected " + expected + ")");
+std::string modelName(const FieldReader& r, const std::vector<std::string>& models) {
+  const std::string expected = "one of: " + joinNames(models);
+  const std::string model = r.requiredString("model", "the model, " + expected);
+  if (std::find(models.begin(), models.end(), model) == models.end()) {
+    r.fail(r.pointer("model"), "unknown model \"" + model + "\"; expected " + expected);
   }
   return model;
 }
 
-ElasticitySettings parseElasticity(const json& j, const Location& at) {
-  requireObject(j, at);
+ElasticitySettings parseElasticity(const json& j, const std::string& pointer, const std::string& file) {
+  const FieldReader r(j, pointer, file, kGot);
   ElasticitySettings out;
-  const std::string model = modelName(j, at, {"isotropic", "measured"});
+  const std::string model = modelName(r, {"isotropic", "measured"});
   if (model == "isotropic") {
-    rejectUnknownKeys(j, at, {"model", "young_modulus_n_per_m", "poisson_ratio", "stiffness_scale"});
+    r.allowOnly({"model", "young_modulus_n_per_m", "poisson_ratio", "stiffness_scale"});
     out.model = ElasticitySettings::Model::Isotropic;
-    out.youngModulus = positiveNumberField(j, at, "young_modulus_n_per_m", "membrane Young's modulus E*h in N/m, > 0");
-    out.poissonRatio = numberField(j, at, "poisson_ratio", "Poisson ratio in [0, 0.5)");
+    out.youngModulus =
+        r.requiredNumber("young_modulus_n_per_m", Bound::Positive, "the membrane Young's modulus E*h in N/m");
+    out.poissonRatio = r.requiredNumber("poisson_ratio", Bound::Finite, "the Poisson ratio");
     if (out.poissonRatio < 0.0 || out.poissonRatio >= 0.5) {
-      at.child("poisson_ratio").fail("must be in [0, 0.5), got " + std::to_string(out.poissonRatio));
+      r.fail(r.pointer("poisson_ratio"), "must be in [0, 0.5), " + got(json(out.poissonRatio)));
     }
   } else {
-    rejectUnknownKeys(j, at,
-                      {"model", "units", "coefficients", "zero_strain", "direction_deg", "at_reference_stretch",
-                       "reference_stretch", "stiffness_scale"});
+    r.allowOnly({"model", "units", "coefficients", "zero_strain", "direction_deg", "at_reference_stretch",
+                 "reference_stretch", "stiffness_scale"});
     out.model = ElasticitySettings::Model::Measured;
-    requireExactly(j, at, "units", "N/m");
-    requireExactly(j, at, "coefficients", kCoefficientNames);
-    requireExactly(j, at, "direction_deg", kDirectionsDeg);
+    r.requireExactly("units", "N/m");
+    r.requireExactly("coefficients", kCoefficientNames);
+    r.requireExactly("direction_deg", kDirectionsDeg);
     const std::string row = "c11, c12, c22, c33 in N/m";
-    out.measured.zeroStrain = numberRow<4>(requiredField(j, at, "zero_strain", "4 numbers: " + row),
-                                           at.child("zero_strain"), row);
-    out.measured.directions = numberTable<5, 4>(
-        requiredField(j, at, "at_reference_stretch", "5 rows (0, 22.5, 45, 67.5, 90 deg) of 4 numbers: " + row),
-        at.child("at_reference_stretch"), row);
+    out.measured.zeroStrain = r.numberRow<4>(r.required("zero_strain", "4 numbers: " + row), r.pointer("zero_strain"),
+                                             "the zero-strain stiffness " + row);
+    out.measured.directions = r.numberTable<5, 4>(
+        r.required("at_reference_stretch", "5 rows (0, 22.5, 45, 67.5, 90 deg) of 4 numbers: " + row),
+        r.pointer("at_reference_stretch"), "the stiffness at the reference stretch, " + row);
     out.measured.referenceStretch =
-        numberField(j, at, "reference_stretch", "principal stretch of the direction rows, > 1");
+        r.requiredNumber("reference_stretch", Bound::Finite, "the principal stretch of the direction rows");
     if (out.measured.referenceStretch <= 1.0) {
-      at.child("reference_stretch").fail("must be > 1 (a stretch), got " + std::to_string(out.measured.referenceStretch));
+      r.fail(r.pointer("reference_stretch"), "must be > 1 (a stretch), " + got(json(out.measured.referenceStretch)));
     }
   }
-  out.stiffnessScale = stiffnessScale(j, at);
+  out.stiffnessScale = stiffnessScale(r);
   return out;
 }
 
-BendingSettings parseBending(const json& j, const Location& at) {
-  requireObject(j, at);
+BendingSettings parseBending(const json& j, const std::string& pointer, const std::string& file) {
+  const FieldReader r(j, pointer, file, kGot);
   BendingSettings out;
-  const std::string model = modelName(j, at, {"none", "constant", "measured"});
+  const std::string model = modelName(r, {"none", "constant", "measured"});
   if (model == "none") {
-    rejectUnknownKeys(j, at, {"model"});
+    r.allowOnly({"model"});
     out.model = BendingSettings::Model::None;
     return out;
   }
   if (model == "constant") {
-    rejectUnknownKeys(j, at, {"model", "stiffness_n_m", "stiffness_scale"});
+    r.allowOnly({"model", "stiffness_n_m", "stiffness_scale"});
     out.model = BendingSettings::Model::Constant;
-    out.stiffness = numberField(j, at, "stiffness_n_m", "bending stiffness k_e in N*m, >= 0");
-    if (out.stiffness < 0.0) at.child("stiffness_n_m").fail("must be >= 0, got " + std::to_string(out.stiffness));
+    out.stiffness = r.requiredNumber("stiffness_n_m", Bound::NonNegative, "the bending stiffness k_e in N*m");
   } else {
-    rejectUnknownKeys(j, at,
-                      {"model", "units", "edge_direction_deg", "curvature_alpha_per_m", "stiffness", "stiffness_scale"});
+    r.allowOnly({"model", "units", "edge_direction_deg", "curvature_alpha_per_m", "stiffness", "stiffness_scale"});
     out.model = BendingSettings::Model::Measured;
-    requireExactly(j, at, "units", "N*m");
-    requireExactly(j, at, "edge_direction_deg", kBendingEdgeDirectionsDeg);
-    requireExactly(j, at, "curvature_alpha_per_m", kBendingCurvaturesPerM);
+    r.requireExactly("units", "N*m");
+    r.requireExactly("edge_direction_deg", kBendingEdgeDirectionsDeg);
+    r.requireExactly("curvature_alpha_per_m", kBendingCurvaturesPerM);
     const std::string what = "bending stiffness k_e in N*m at alpha = 0, 5, 10, 15, 20 1/m";
-    const Location table = at.child("stiffness");
-    out.measured = numberTable<3, 5>(
-        requiredField(j, at, "stiffness", "3 rows (edges at 0, 45, 90 deg) of 5 numbers: " + what), table, what);
+    const std::string table = r.pointer("stiffness");
+    out.measured = r.numberTable<3, 5>(r.required("stiffness", "3 rows (edges at 0, 45, 90 deg) of 5 numbers: " + what),
+                                       table, "the " + what);
+    // Negative bending stiffness has no physical meaning, unlike negative stretching samples.
     for (size_t i = 0; i < 3; ++i) {
       for (size_t k = 0; k < 5; ++k) {
         if (out.measured[i][k] < 0.0) {
-          table.child(i).child(k).fail("must be >= 0 (" + what + "), got " + std::to_string(out.measured[i][k]));
+          r.fail(childPointer(childPointer(table, i), k),
+                 "the " + what + " must be >= 0, " + got(json(out.measured[i][k])));
         }
       }
     }
   }
-  out.stiffnessScale = stiffnessScale(j, at);
+  out.stiffnessScale = stiffnessScale(r);
   return out;
 }
 
@@ -271,17 +170,14 @@ std::vector<std::string> availablePresets(const std::vector<std::filesystem::pat
 }  // namespace
 
 Material parseMaterial(const nlohmann::json& j, const std::string& file, const std::string& path) {
-  const Location at{file, path};
-  requireObject(j, at);
-  rejectUnknownKeys(j, at, {"name", "source", "area_density_kg_m2", "elasticity", "bending"});
+  const FieldReader r(j, path, file, {"name", "source", "area_density_kg_m2", "elasticity", "bending"}, kGot);
   Material m;
   // name and source are optional inline (a scene's own material); preset files require them.
-  if (j.contains("name")) m.name = stringField(j, at, "name", "the material's name");
-  if (j.contains("source")) m.source = stringField(j, at, "source", "where the numbers come from");
-  m.areaDensity = positiveNumberField(j, at, "area_density_kg_m2", "area density in kg/m^2, > 0");
-  m.elasticity = parseElasticity(requiredField(j, at, "elasticity", "the membrane model, an object"),
-                                 at.child("elasticity"));
-  m.bending = parseBending(requiredField(j, at, "bending", "the bending model, an object"), at.child("bending"));
+  if (r.has("name")) m.name = r.requiredString("name", "the material's name");
+  if (r.has("source")) m.source = r.requiredString("source", "where the numbers come from");
+  m.areaDensity = r.requiredNumber("area_density_kg_m2", Bound::Positive, "the area density in kg/m^2");
+  m.elasticity = parseElasticity(r.required("elasticity", "the membrane model, an object"), r.pointer("elasticity"), file);
+  m.bending = parseBending(r.required("bending", "the bending model, an object"), r.pointer("bending"), file);
   return m;
 }
 
@@ -305,11 +201,10 @@ Material loadMaterialFile(const std::filesystem::path& file) {
   } catch (const json::exception& e) {  // a syntax error (with its position) or a number overflow
     throw InputError(fileName, "", std::string("invalid JSON: ") + e.what());
   }
-  const Location at{fileName, ""};
-  requireObject(j, at);
   // A material file is a preset: it must say what it is and where its numbers come from.
-  stringField(j, at, "name", "the preset's name");
-  stringField(j, at, "source", "where the numbers come from (paper, data set)");
+  const FieldReader r(j, "", fileName, kGot);
+  r.requiredString("name", "the preset's name");
+  r.requiredString("source", "where the numbers come from (paper, data set)");
   return parseMaterial(j, fileName, "");
 }
 
@@ -333,8 +228,8 @@ Material loadMaterialPreset(const std::string& name, const std::vector<std::file
   for (const auto& dir : presetDirs) dirs.push_back(dir.string());
   throw InputError(referencingFile, referencingField,
                    "unknown material preset '" + name + "'; available presets: " +
-                       (available.empty() ? std::string("none") : joined(available)) +
-                       " (searched: " + joined(dirs) + ")");
+                       (available.empty() ? std::string("none") : joinNames(available)) +
+                       " (searched: " + joinNames(dirs) + ")");
 }
 
 }  // namespace weft

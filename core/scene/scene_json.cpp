@@ -1,10 +1,8 @@
 #include "scene/scene_json.h"
 
 #include <algorithm>
-#include <cmath>
 #include <cstdlib>
 #include <fstream>
-#include <limits>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
@@ -13,6 +11,7 @@
 #include "mesh/grid.h"
 #include "mesh/obj_import.h"
 #include "util/input_error.h"
+#include "util/json_fields.h"
 
 namespace weft {
 namespace {
@@ -20,181 +19,21 @@ namespace {
 using nlohmann::json;
 namespace fs = std::filesystem;
 
-// ---------------------------------------------------------------------------------------------
-// Strict field reading. Every value is read through a FieldReader, which knows the file and the
-// JSON pointer of the object it reads, so each message can say exactly which field is wrong and
-// what was expected instead.
-
-// RFC 6901: '~' and '/' inside a key are escaped so the pointer can be followed back.
-std::string childPointer(const std::string& parent, const std::string& key) {
-  std::string escaped;
-  for (char c : key) {
-    if (c == '~') escaped += "~0";
-    else if (c == '/') escaped += "~1";
-    else escaped += c;
-  }
-  return parent + "/" + escaped;
+// Every value is read through a FieldReader (util/json_fields.h), so each message names the scene
+// file and the exact JSON pointer of the field. Points and boxes are fixed-size rows of numbers; the reader checks their length and finiteness.
+Vec3 vec3Value(const FieldReader& r, const json& value, const std::string& at) {
+  const auto v = r.numberRow<3>(value, at);
+  return Vec3(v[0], v[1], v[2]);
 }
 
-std::string childPointer(const std::string& parent, std::size_t index) {
-  return parent + "/" + std::to_string(index);
+Vec3 vec3(const FieldReader& r, const std::string& key, const Vec3& fallback) {
+  return r.has(key) ? vec3Value(r, r.at(key), r.pointer(key)) : fallback;
 }
 
-// "got -1", "got string \"NaN\"": the value as written, with its type when it is not a number,
-// shortened so that a whole object pasted in the wrong place does not flood the terminal.
-std::string got(const json& value) {
-  std::string text = value.dump();
-  if (text.size() > 60) text = text.substr(0, 57) + "...";
-  if (value.is_number()) return "got " + text;
-  return std::string("got ") + value.type_name() + " " + text;
+Vec2 vec2Value(const FieldReader& r, const json& value, const std::string& at) {
+  const auto v = r.numberRow<2>(value, at);
+  return Vec2(v[0], v[1]);
 }
-
-std::string joinKeys(const std::vector<std::string>& keys) {
-  std::string out;
-  for (const auto& k : keys) out += (out.empty() ? "" : ", ") + k;
-  return out;
-}
-
-enum class Bound {
-  Finite,        // any finite number
-  Positive,      // > 0
-  NonNegative,   // >= 0
-  UnitInterval,  // in [0, 1]
-};
-
-bool satisfies(double x, Bound bound) {
-  if (!std::isfinite(x)) return false;
-  switch (bound) {
-    case Bound::Finite: return true;
-    case Bound::Positive: return x > 0.0;
-    case Bound::NonNegative: return x >= 0.0;
-    case Bound::UnitInterval: return x >= 0.0 && x <= 1.0;
-  }
-  return false;
-}
-
-const char* expectation(Bound bound) {
-  switch (bound) {
-    case Bound::Finite: return "must be a finite number";
-    case Bound::Positive: return "must be a positive finite number";
-    case Bound::NonNegative: return "must be a finite number >= 0";
-    case Bound::UnitInterval: return "must be a number in [0, 1]";
-  }
-  return "";
-}
-
-class FieldReader {
- public:
-  // Rejects a non-object and any key outside `allowed`, naming the key and listing the allowed ones.
-  FieldReader(const json& object, std::string pointer, const std::string& file, std::vector<std::string> allowed)
-      : object_(object), pointer_(std::move(pointer)), file_(file) {
-    if (!object_.is_object()) fail(pointer_, "must be an object, " + got(object_));
-    for (const auto& item : object_.items()) {
-      if (std::find(allowed.begin(), allowed.end(), item.key()) == allowed.end()) {
-        fail(childPointer(pointer_, item.key()),
-             "unknown key \"" + item.key() + "\"; allowed keys here: " + joinKeys(allowed));
-      }
-    }
-  }
-
-  const std::string& pointer() const { return pointer_; }
-  std::string pointer(const std::string& key) const { return childPointer(pointer_, key); }
-  bool has(const std::string& key) const { return object_.contains(key); }
-  const json& at(const std::string& key) const { return object_.at(key); }
-
-  const json& required(const std::string& key, const std::string& what) const {
-    if (!has(key)) fail(pointer(key), "missing; expected " + what);
-    return at(key);
-  }
-
-  [[noreturn]] void fail(const std::string& pointer, const std::string& message) const {
-    throw InputError(file_, pointer, message);
-  }
-
-  double number(const std::string& key, double fallback, Bound bound) const {
-    if (!has(key)) return fallback;
-    return numberValue(at(key), pointer(key), bound);
-  }
-
-  double numberValue(const json& value, const std::string& at, Bound bound) const {
-    if (!value.is_number()) fail(at, std::string(expectation(bound)) + ", " + got(value));
-    const double x = value.get<double>();
-    if (!satisfies(x, bound)) fail(at, std::string(expectation(bound)) + ", " + got(value));
-    return x;
-  }
-
-  int integer(const std::string& key, int fallback, int minimum) const {
-    if (!has(key)) return fallback;
-    return integerValue(at(key), pointer(key), minimum);
-  }
-
-  int integerValue(const json& value, const std::string& at, int minimum) const {
-    const std::string expected = "must be an integer >= " + std::to_string(minimum);
-    if (!value.is_number()) fail(at, expected + ", " + got(value));
-    const double x = value.get<double>();
-    // 32.0 is accepted as 32: some tools write every number as a float.
-    if (!std::isfinite(x) || x != std::floor(x) || x < minimum ||
-        x > static_cast<double>(std::numeric_limits<int>::max())) {
-      fail(at, expected + ", " + got(value));
-    }
-    return static_cast<int>(x);
-  }
-
-  bool boolean(const std::string& key, bool fallback) const {
-    if (!has(key)) return fallback;
-    if (!at(key).is_boolean()) fail(pointer(key), "must be true or false, " + got(at(key)));
-    return at(key).get<bool>();
-  }
-
-  std::string string(const std::string& key, const std::string& fallback) const {
-    if (!has(key)) return fallback;
-    return stringValue(at(key), pointer(key));
-  }
-
-  std::string stringValue(const json& value, const std::string& at) const {
-    if (!value.is_string()) fail(at, "must be a string, " + got(value));
-    return value.get<std::string>();
-  }
-
-  const json& array(const std::string& key) const {
-    if (!at(key).is_array()) fail(pointer(key), "must be an array, " + got(at(key)));
-    return at(key);
-  }
-
-  Vec3 vec3(const std::string& key, const Vec3& fallback) const {
-    if (!has(key)) return fallback;
-    return vec3Value(at(key), pointer(key));
-  }
-
-  Vec3 vec3Value(const json& value, const std::string& at) const {
-    const Eigen::VectorXd v = vector(value, at, 3);
-    return Vec3(v[0], v[1], v[2]);
-  }
-
-  Vec2 vec2Value(const json& value, const std::string& at) const {
-    const Eigen::VectorXd v = vector(value, at, 2);
-    return Vec2(v[0], v[1]);
-  }
-
- private:
-  Eigen::VectorXd vector(const json& value, const std::string& at, int size) const {
-    const std::string expected = "must be an array of " + std::to_string(size) + " finite numbers";
-    if (!value.is_array() || value.size() != static_cast<std::size_t>(size)) fail(at, expected + ", " + got(value));
-    Eigen::VectorXd v(size);
-    for (int i = 0; i < size; ++i) {
-      const json& item = value[static_cast<std::size_t>(i)];
-      if (!item.is_number() || !std::isfinite(item.get<double>())) {
-        fail(childPointer(at, static_cast<std::size_t>(i)), expected + ", " + got(value));
-      }
-      v[i] = item.get<double>();
-    }
-    return v;
-  }
-
-  const json& object_;
-  std::string pointer_;
-  const std::string& file_;
-};
 
 // Names become folder and file names (out/<scene>/, frame_0000_<cloth>.obj), so they are kept
 // to characters that are safe in a path on every system and cannot climb out of the output folder.
@@ -272,8 +111,8 @@ void parseMesh(const json& j, const std::string& pointer, const Context& ctx, Cl
 Placement parsePlacement(const json& j, const std::string& pointer, const Context& ctx) {
   const FieldReader r(j, pointer, ctx.file, {"translate", "rotate_deg"});
   Placement p;
-  p.translate = r.vec3("translate", p.translate);
-  p.rotateDeg = r.vec3("rotate_deg", p.rotateDeg);
+  p.translate = vec3(r, "translate", p.translate);
+  p.rotateDeg = vec3(r, "rotate_deg", p.rotateDeg);
   return p;
 }
 
@@ -305,7 +144,7 @@ std::vector<PinKeyframe> parseScript(const json& j, const std::string& pointer, 
     const FieldReader r(j[k], childPointer(pointer, k), ctx.file, {"t", "offset"});
     PinKeyframe key;
     key.time = r.numberValue(r.required("t", "the key's time in seconds"), r.pointer("t"), Bound::NonNegative);
-    key.offset = r.vec3Value(r.required("offset", "the offset [x, y, z] in metres"), r.pointer("offset"));
+    key.offset = vec3Value(r, r.required("offset", "the offset [x, y, z] in metres"), r.pointer("offset"));
     if (!script.empty() && key.time <= script.back().time) {
       r.fail(r.pointer("t"), "keys must be in increasing time order; this key's time " + std::to_string(key.time) +
                                  " does not come after the previous key's " + std::to_string(script.back().time));
@@ -325,21 +164,21 @@ PinGroup parsePinGroup(const json& j, const std::string& pointer, const Context&
   PinGroup pins;
   if (r.has("corners")) {
     const json& corners = r.array("corners");
-    if (corners.empty()) r.fail(r.pointer("corners"), "must name at least one corner: " + joinKeys(cornerNames()));
+    if (corners.empty()) r.fail(r.pointer("corners"), "must name at least one corner: " + joinNames(cornerNames()));
     for (std::size_t k = 0; k < corners.size(); ++k) {
       const std::string at = childPointer(r.pointer("corners"), k);
       const std::string name = r.stringValue(corners[k], at);
       const auto& known = cornerNames();
       if (std::find(known.begin(), known.end(), name) == known.end()) {
-        r.fail(at, "unknown corner \"" + name + "\"; expected one of " + joinKeys(known));
+        r.fail(at, "unknown corner \"" + name + "\"; expected one of " + joinNames(known));
       }
       pins.corners.push_back(name);
     }
   }
   if (r.has("rest_box")) {
     const FieldReader box(r.at("rest_box"), r.pointer("rest_box"), ctx.file, {"min", "max"});
-    const Vec2 lo = box.vec2Value(box.required("min", "the box's [x, y] minimum in material space (m)"), box.pointer("min"));
-    const Vec2 hi = box.vec2Value(box.required("max", "the box's [x, y] maximum in material space (m)"), box.pointer("max"));
+    const Vec2 lo = vec2Value(box, box.required("min", "the box's [x, y] minimum in material space (m)"), box.pointer("min"));
+    const Vec2 hi = vec2Value(box, box.required("max", "the box's [x, y] maximum in material space (m)"), box.pointer("max"));
     if (lo.x() > hi.x() || lo.y() > hi.y()) {
       box.fail(box.pointer(), "min must not exceed max in x or y, got min [" + std::to_string(lo.x()) + ", " +
                                   std::to_string(lo.y()) + "], max [" + std::to_string(hi.x()) + ", " +
@@ -430,12 +269,12 @@ ClothSpec parseCloth(const json& j, const std::string& pointer, std::size_t inde
 ForcesSpec parseForces(const json& j, const std::string& pointer, const Context& ctx) {
   const FieldReader r(j, pointer, ctx.file, {"gravity", "wind", "damping"});
   ForcesSpec forces;
-  forces.gravity = r.vec3("gravity", forces.gravity);
+  forces.gravity = vec3(r, "gravity", forces.gravity);
   if (r.has("wind")) {
     const FieldReader w(r.at("wind"), r.pointer("wind"), ctx.file,
                         {"velocity", "air_density", "drag", "lift", "gust_amplitude", "gust_frequency"});
     WindSpec& wind = forces.wind;
-    wind.velocity = w.vec3("velocity", wind.velocity);
+    wind.velocity = vec3(w, "velocity", wind.velocity);
     wind.airDensity = w.number("air_density", wind.airDensity, Bound::NonNegative);
     wind.drag = w.number("drag", wind.drag, Bound::NonNegative);
     wind.lift = w.number("lift", wind.lift, Bound::NonNegative);
@@ -580,6 +419,17 @@ SearchPaths defaultSearchPaths(const fs::path& sceneFile) {
   if (const char* data = std::getenv("WEFT_DATA_DIR"); data != nullptr && *data != '\0') {
     paths.materialDirs.push_back(fs::path(data) / "presets" / "materials");
     paths.assetDirs.push_back(fs::path(data) / "assets");
+  }
+  // A scene inside presets/scenes finds the same folder twice: list each folder once.
+  for (auto* dirs : {&paths.materialDirs, &paths.assetDirs}) {
+    std::vector<fs::path> unique;
+    for (const fs::path& dir : *dirs) {
+      std::error_code error;
+      const fs::path canonical = fs::weakly_canonical(dir, error);
+      const fs::path key = error ? dir : canonical;
+      if (std::find(unique.begin(), unique.end(), key) == unique.end()) unique.push_back(key);
+    }
+    *dirs = std::move(unique);
   }
   return paths;
 }
