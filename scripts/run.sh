@@ -7,9 +7,10 @@ scripts/install_deps.sh
 scripts/build.sh
 SCENE=presets/scenes/hanging-sheet.json
 if [ -n "${DISPLAY:-}${WAYLAND_DISPLAY:-}" ]; then
-  if ./build/app/weft edit "$SCENE"; then exit 0; fi
-  status=$?
-  [ "$status" -ne 2 ] && exit "$status"
+  status=0
+  ./build/app/weft edit "$SCENE" || status=$?
+  # 2: the editor could not open (not built yet, or no usable display): fall back to headless.
+  if [ "$status" -ne 2 ]; then exit "$status"; fi
   echo "weft: falling back to a headless run" >&2
 fi
 ./build/app/weft run "$SCENE" --out out/hanging-sheet --obj "$@"
