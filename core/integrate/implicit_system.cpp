@@ -12,6 +12,12 @@ void ImplicitSystem::ensurePattern(const Cloth& cloth) {
   patternStale = false;
 }
 
+void ImplicitSystem::beginStep(const Cloth& cloth, const StepInputs& inputs, StageProfile& profile) {
+  ensurePattern(cloth);
+  externalForces(cloth, inputs, externalForce, profile);
+  pinTargets(cloth, inputs.time + inputs.dt, pinnedVertices, pinnedTargets, profile);
+}
+
 bool ImplicitSystem::solve(const Eigen::VectorXd& b, double rhsNormFloor, Eigen::VectorXd& x, StageProfile& profile,
                            SolverStats& stats) {
   StageTimer timer(profile, "linear_solve");

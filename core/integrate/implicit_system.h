@@ -7,6 +7,7 @@
 #include <Eigen/Core>
 
 #include "forces/elastic_forces.h"
+#include "integrate/integrator.h"
 #include "integrate/linear_solver.h"
 #include "integrate/system_matrix.h"
 
@@ -28,6 +29,9 @@ struct ImplicitSystem {
 
   // Rebuilds the matrix pattern when the topology changed (or on first use).
   void ensurePattern(const Cloth& cloth);
+  // What every implicit step starts with: the pattern in step with the topology, the external
+  // forces and the pins' targets at the end of the step.
+  void beginStep(const Cloth& cloth, const StepInputs& inputs, StageProfile& profile);
   // Solves matrix * x = rhs to |matrix * x - rhs| <= tolerance * max(|rhs|, rhsNormFloor) (see
   // linear_solver.h), records the statistics; returns false when the solve failed or gave a
   // non-finite answer (x is then left at its initial guess).

@@ -9,9 +9,7 @@ void LinearizedBackwardEuler::advance(Cloth& cloth, const StepInputs& in, StageP
   ClothMesh& mesh = cloth.mesh;
   const int n = mesh.vertexCount();
   const double h = in.dt;
-  system_.ensurePattern(cloth);
-  externalForces(cloth, in, system_.externalForce, profile);
-  pinTargets(cloth, in.time + h, system_.pinnedVertices, system_.pinnedTargets, profile);
+  system_.beginStep(cloth, in, profile);
 
   system_.matrix.setZero();
   ElasticOptions options;

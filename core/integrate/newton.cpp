@@ -34,9 +34,7 @@ void NewtonIntegrator::advance(Cloth& cloth, const StepInputs& in, StageProfile&
   ClothMesh& mesh = cloth.mesh;
   const int n = mesh.vertexCount();
   const double h = in.dt;
-  system_.ensurePattern(cloth);
-  externalForces(cloth, in, system_.externalForce, profile);
-  pinTargets(cloth, in.time + h, system_.pinnedVertices, system_.pinnedTargets, profile);
+  system_.beginStep(cloth, in, profile);
 
   x0_ = mesh.x;
   inertialTarget_.resize(n);
