@@ -9,6 +9,8 @@
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
+#include "support/mesh_helpers.h"
+
 namespace weft {
 namespace {
 
@@ -336,17 +338,7 @@ TEST(Bending, BuildsOneHingePerInteriorEdgeInEdgeOrder) {
   for (int j = 0; j < 3; ++j) {
     for (int i = 0; i < 3; ++i) mesh.addVertex(Vec3(0.1 * i, 0.1 * j, 0.0));
   }
-  for (int j = 0; j < 2; ++j) {
-    for (int i = 0; i < 2; ++i) {
-      const int a = 3 * j + i, b = a + 1, c = a + 4, d = a + 3;
-      for (const std::array<int, 3>& corners : {std::array<int, 3>{a, b, c}, std::array<int, 3>{a, c, d}}) {
-        Triangle t;
-        t.v = corners;
-        for (int k = 0; k < 3; ++k) t.rest[k] = mesh.x[corners[k]].head<2>();
-        mesh.tris.push_back(t);
-      }
-    }
-  }
+  test::triangulatePatch(mesh, 3);
   buildEdges(mesh);
   const std::vector<BendingHinge> hinges = buildBendingHinges(mesh, 0.0);
   int interior = 0;

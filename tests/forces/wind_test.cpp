@@ -6,6 +6,8 @@
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
+#include "support/mesh_helpers.h"
+
 namespace weft {
 namespace {
 
@@ -146,17 +148,7 @@ TEST(Wind, TotalIsTheSumOverTriangles) {
       sheet.v[id] = Vec3(0.1 * j, -0.2 * i, 0.05 * (i + j));
     }
   }
-  for (int j = 0; j < 2; ++j) {
-    for (int i = 0; i < 2; ++i) {
-      const int a = 3 * j + i, b = a + 1, c = a + 4, d = a + 3;
-      for (const std::array<int, 3>& corners : {std::array<int, 3>{a, b, c}, std::array<int, 3>{a, c, d}}) {
-        Triangle t;
-        t.v = corners;
-        for (int k = 0; k < 3; ++k) t.rest[k] = sheet.x[corners[k]].head<2>();
-        sheet.tris.push_back(t);
-      }
-    }
-  }
+  test::triangulatePatch(sheet, 3);
   const WindSpec wind = windAlong(Vec3(2.0, 1.0, 3.0));
   Vec3 sum = Vec3::Zero();
   for (const Triangle& t : sheet.tris) {

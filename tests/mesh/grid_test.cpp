@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "support/mesh_helpers.h"
+
 #include <cmath>
 #include <limits>
 
@@ -148,21 +150,7 @@ TEST(Grid, StartsAtRestWithZeroMassAndNothingPinned) {
 TEST(Grid, BuildingTheSameGridTwiceGivesIdenticalArrays) {
   const ClothMesh a = makeGrid(spec(11, 9, 1.1, 0.7));
   const ClothMesh b = makeGrid(spec(11, 9, 1.1, 0.7));
-  EXPECT_EQ(a.x, b.x);
-  EXPECT_EQ(a.v, b.v);
-  EXPECT_EQ(a.mass, b.mass);
-  EXPECT_EQ(a.pinned, b.pinned);
-  ASSERT_EQ(a.triangleCount(), b.triangleCount());
-  for (int t = 0; t < a.triangleCount(); ++t) {
-    EXPECT_EQ(a.tris[t].v, b.tris[t].v);
-    EXPECT_EQ(a.tris[t].rest, b.tris[t].rest);
-    EXPECT_EQ(a.tris[t].edge, b.tris[t].edge);
-  }
-  ASSERT_EQ(a.edgeCount(), b.edgeCount());
-  for (int e = 0; e < a.edgeCount(); ++e) {
-    EXPECT_EQ(a.edges[e].v, b.edges[e].v);
-    EXPECT_EQ(a.edges[e].tri, b.edges[e].tri);
-  }
+  test::expectSameMesh(a, b);
 }
 
 TEST(Grid, EdgesAreSortedByTheirEndpoints) {

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "support/mesh_helpers.h"
+
 #include <filesystem>
 #include <fstream>
 
@@ -273,15 +275,7 @@ TEST(ObjImport, LoadingTwiceGivesIdenticalMeshes) {
       "f 1/1 2/2 3/3 4/4\nf 2/2 5/5 6/6 3/3\n");
   const ClothMesh a = load(path);
   const ClothMesh b = load(path);
-  EXPECT_EQ(a.x, b.x);
-  ASSERT_EQ(a.triangleCount(), b.triangleCount());
-  for (int t = 0; t < a.triangleCount(); ++t) {
-    EXPECT_EQ(a.tris[t].v, b.tris[t].v);
-    EXPECT_EQ(a.tris[t].rest, b.tris[t].rest);
-    EXPECT_EQ(a.tris[t].edge, b.tris[t].edge);
-  }
-  ASSERT_EQ(a.edgeCount(), b.edgeCount());
-  for (int e = 0; e < a.edgeCount(); ++e) EXPECT_EQ(a.edges[e].tri, b.edges[e].tri);
+  test::expectSameMesh(a, b);
 }
 
 #ifdef WEFT_SOURCE_DIR
