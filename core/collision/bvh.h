@@ -1,0 +1,41 @@
+#pragma once
+// A bounding volume hierarchy over axis-aligned boxes (the swept boxes of a mesh's triangles over
+// a step: start and end positions, grown by the contact thickness). Built once per topology,
+// refitted every step. Queries report overlapping leaf pairs in a deterministic order.
+#include <functional>
+#include <limits>
+#include <vector>
+
+#include "util/types.h"
+
+namespace weft {
+
+struct Aabb {
+  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity());
+  Vec3 hi = Vec3::Constant(-std::numeric_limits<double>::infinity());
+  void grow(const Vec3& p) { lo = lo.cwiseMin(p); hi = hi.cwiseMax(p); }
+  void grow(const Aabb& b) { lo = lo.cwiseMin(b.lo); hi = hi.cwiseMax(b.hi); }
+  void inflate(double r) { lo.array() -= r; hi.array() += r; }
+  bool overlaps(const Aabb& b) const { return (lo.array() <= b.hi.array()).all() && (b.lo.array() <= hi.array()).all(); }
+};
+
+class Bvh {
+ public:
+  // Builds the tree over the boxes (leaf i = box i). Deterministic (no randomness, stable splits).
+  void build(const std::vector<Aabb>& boxes);
+  // Same number of boxes, new extents: updates the tree bottom-up without changing its shape.
+  void refit(const std::vector<Aabb>& boxes);
+  int leafCount() const;
+  bool empty() const { return leafCount() == 0; }
+  const Aabb& bounds() const;  // box of the whole tree (empty box when the tree is empty)
+
+  // Every pair (i, j), i a leaf of this tree and j a leaf of `other`, whose boxes overlap.
+  void overlappingPairs(const Bvh& other, const std::function<void(int, int)>& visit) const;
+  // Every pair (i, j), i < j, of leaves of this tree whose boxes overlap.
+  void selfOverlappingPairs(const std::function<void(int, int)>& visit) const;
+
+ private:
+  // Implementation's choice (nodes in a flat array, leaf -> node map, ...).
+};
+
+}  // namespace weft
