@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "material/material.h"
+#include "scene/contact_spec.h"
 #include "util/types.h"
 
 namespace weft {
@@ -97,6 +98,7 @@ struct StageSwitches {
   bool bending = true;
   bool wind = true;
   bool gravity = true;
+  bool collision = true;  // contact with obstacles, the ground and (if on) the cloth itself
 };
 
 struct OutputSpec {
@@ -113,6 +115,9 @@ struct Scene {
   SolverSpec solver;
   StageSwitches stages;
   OutputSpec output;
+  GroundSpec ground;
+  std::vector<ObstacleSpec> obstacles;
+  ContactSpec contact;
 };
 
 int stepsPerFrame(const Scene& scene);

@@ -12,6 +12,8 @@
 #include "mesh/obj_import.h"
 #include "util/input_error.h"
 #include "util/json_fields.h"
+#include "scene/contact_json.h"
+#include "scene/scene_json_parts.h"
 
 namespace weft {
 namespace {
@@ -19,44 +21,10 @@ namespace {
 using nlohmann::json;
 namespace fs = std::filesystem;
 
-// Every value is read through a FieldReader (util/json_fields.h), so each message names the scene
-// file and the exact JSON pointer of the field. Points and boxes are fixed-size rows of numbers; the reader checks their length and finiteness.
-Vec3 vec3Value(const FieldReader& r, const json& value, const std::string& at) {
-  const auto v = r.numberRow<3>(value, at);
-  return Vec3(v[0], v[1], v[2]);
-}
-
-Vec3 vec3(const FieldReader& r, const std::string& key, const Vec3& fallback) {
-  return r.has(key) ? vec3Value(r, r.at(key), r.pointer(key)) : fallback;
-}
-
-Vec2 vec2Value(const FieldReader& r, const json& value, const std::string& at) {
-  const auto v = r.numberRow<2>(value, at);
-  return Vec2(v[0], v[1]);
-}
-
-// Names become folder and file names (out/<scene>/, frame_0000_<cloth>.obj), so they are kept
-// to characters that are safe in a path on every system and cannot climb out of the output folder.
-void requireSafeName(const FieldReader& r, const std::string& key, const std::string& name) {
-  const bool safeChars = std::all_of(name.begin(), name.end(), [](char c) {
-    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '-' || c == '_' ||
-           c == '.';
-  });
-  if (name.empty() || !safeChars || name.front() == '.') {
-    r.fail(r.pointer(key), "must be a non-empty name of letters, digits, '-', '_' and '.' (not starting with '.'), got \"" +
-                               name + "\"");
-  }
-}
-
 // ---------------------------------------------------------------------------------------------
 // Sections.
 
-struct Context {
-  std::string file;  // the scene file as given (messages)
-  const SearchPaths& paths;
-};
-
-GridSpec parseGrid(const json& j, const std::string& pointer, const Context& ctx) {
+GridSpec parseGrid(const json& j, const std::string& pointer, const SceneReadContext& ctx) {
   const FieldReader r(j, pointer, ctx.file, {"width", "height", "resolution"});
   GridSpec grid;
   grid.width = r.number("width", grid.width, Bound::Positive);
@@ -73,24 +41,7 @@ GridSpec parseGrid(const json& j, const std::string& pointer, const Context& ctx
   return grid;
 }
 
-// A relative mesh path is looked up in each asset folder in turn; the first existing file wins.
-fs::path resolveAsset(const std::string& relative, const FieldReader& r, const std::string& key,
-                      const Context& ctx) {
-  const fs::path given(relative);
-  if (given.is_absolute()) {
-    if (fs::is_regular_file(given)) return given;
-    r.fail(r.pointer(key), "file not found: \"" + relative + "\"");
-  }
-  std::string looked;
-  for (const auto& dir : ctx.paths.assetDirs) {
-    const fs::path candidate = dir / given;
-    if (fs::is_regular_file(candidate)) return candidate.lexically_normal();
-    looked += (looked.empty() ? "" : ", ") + dir.string();
-  }
-  r.fail(r.pointer(key), "file not found: \"" + relative + "\" (looked in: " + looked + ")");
-}
-
-ObjSpec parseObj(const json& j, const std::string& pointer, const Context& ctx) {
+ObjSpec parseObj(const json& j, const std::string& pointer, const SceneReadContext& ctx) {
   const FieldReader r(j, pointer, ctx.file, {"path", "uv_scale"});
   ObjSpec obj;
   const std::string relative = r.stringValue(r.required("path", "the OBJ file's path (a string)"), r.pointer("path"));
@@ -99,7 +50,7 @@ ObjSpec parseObj(const json& j, const std::string& pointer, const Context& ctx) 
   return obj;
 }
 
-void parseMesh(const json& j, const std::string& pointer, const Context& ctx, ClothSpec& cloth) {
+void parseMesh(const json& j, const std::string& pointer, const SceneReadContext& ctx, ClothSpec& cloth) {
   const FieldReader r(j, pointer, ctx.file, {"grid", "obj"});
   if (r.has("grid") == r.has("obj")) {
     r.fail(pointer, "needs exactly one of \"grid\" and \"obj\", e.g. {\"grid\": {\"resolution\": [32, 32]}}");
@@ -108,7 +59,7 @@ void parseMesh(const json& j, const std::string& pointer, const Context& ctx, Cl
   if (r.has("obj")) cloth.obj = parseObj(r.at("obj"), r.pointer("obj"), ctx);
 }
 
-Placement parsePlacement(const json& j, const std::string& pointer, const Context& ctx) {
+Placement parsePlacement(const json& j, const std::string& pointer, const SceneReadContext& ctx) {
   const FieldReader r(j, pointer, ctx.file, {"translate", "rotate_deg"});
   Placement p;
   p.translate = vec3(r, "translate", p.translate);
@@ -116,7 +67,7 @@ Placement parsePlacement(const json& j, const std::string& pointer, const Contex
   return p;
 }
 
-void parseMaterialField(const FieldReader& r, const Context& ctx, ClothSpec& cloth) {
+void parseMaterialField(const FieldReader& r, const SceneReadContext& ctx, ClothSpec& cloth) {
   const json& value = r.required("material", "a preset name (presets/materials/NAME.json) or a material object");
   const std::string at = r.pointer("material");
   if (value.is_object()) {
@@ -136,7 +87,7 @@ const std::vector<std::string>& cornerNames() {
   return names;
 }
 
-std::vector<PinKeyframe> parseScript(const json& j, const std::string& pointer, const Context& ctx,
+std::vector<PinKeyframe> parseScript(const json& j, const std::string& pointer, const SceneReadContext& ctx,
                                      const FieldReader& parent) {
   if (!j.is_array()) parent.fail(pointer, "must be an array of {\"t\": seconds, \"offset\": [x, y, z]}, " + got(j));
   std::vector<PinKeyframe> script;
@@ -154,7 +105,7 @@ std::vector<PinKeyframe> parseScript(const json& j, const std::string& pointer, 
   return script;
 }
 
-PinGroup parsePinGroup(const json& j, const std::string& pointer, const Context& ctx) {
+PinGroup parsePinGroup(const json& j, const std::string& pointer, const SceneReadContext& ctx) {
   const FieldReader r(j, pointer, ctx.file, {"corners", "rest_box", "vertices", "script"});
   const int selectors = int(r.has("corners")) + int(r.has("rest_box")) + int(r.has("vertices"));
   if (selectors != 1) {
@@ -200,7 +151,7 @@ PinGroup parsePinGroup(const json& j, const std::string& pointer, const Context&
 // Pins are checked against the mesh they will hold, so that a vertex id past the end or a box
 // that misses the cloth is reported at load time instead of silently pinning nothing.
 void checkPinsAgainstMesh(const ClothSpec& cloth, const ClothMesh& mesh, const std::string& pointer,
-                          const Context& ctx) {
+                          const SceneReadContext& ctx) {
   std::vector<std::vector<Vec2>> rest(static_cast<std::size_t>(mesh.vertexCount()));
   for (const auto& t : mesh.tris) {
     for (int k = 0; k < 3; ++k) {
@@ -238,7 +189,7 @@ void checkPinsAgainstMesh(const ClothSpec& cloth, const ClothMesh& mesh, const s
 
 // Builds the mesh once at load time: a missing UV set or a degenerate triangle in an OBJ file is
 // a problem with this scene, so it is reported against the scene field that names the file.
-ClothMesh buildMeshForChecks(const ClothSpec& cloth, const std::string& pointer, const Context& ctx) {
+ClothMesh buildMeshForChecks(const ClothSpec& cloth, const std::string& pointer, const SceneReadContext& ctx) {
   if (cloth.grid) return makeGrid(*cloth.grid);
   try {
     return loadObjMesh(*cloth.obj, ctx.file);
@@ -247,7 +198,7 @@ ClothMesh buildMeshForChecks(const ClothSpec& cloth, const std::string& pointer,
   }
 }
 
-ClothSpec parseCloth(const json& j, const std::string& pointer, std::size_t index, const Context& ctx) {
+ClothSpec parseCloth(const json& j, const std::string& pointer, std::size_t index, const SceneReadContext& ctx) {
   const FieldReader r(j, pointer, ctx.file, {"name", "mesh", "placement", "material", "weft_angle_deg", "pins"});
   ClothSpec cloth;
   cloth.name = r.string("name", index == 0 ? std::string("cloth") : "cloth" + std::to_string(index));
@@ -266,7 +217,7 @@ ClothSpec parseCloth(const json& j, const std::string& pointer, std::size_t inde
   return cloth;
 }
 
-ForcesSpec parseForces(const json& j, const std::string& pointer, const Context& ctx) {
+ForcesSpec parseForces(const json& j, const std::string& pointer, const SceneReadContext& ctx) {
   const FieldReader r(j, pointer, ctx.file, {"gravity", "wind", "damping"});
   ForcesSpec forces;
   forces.gravity = vec3(r, "gravity", forces.gravity);
@@ -307,7 +258,7 @@ PreconditionerKind parsePreconditioner(const FieldReader& r) {
                                           "\"; expected lagged_cholesky, lagged_exact_cholesky or block_jacobi");
 }
 
-SolverSpec parseSolver(const json& j, const std::string& pointer, const Context& ctx) {
+SolverSpec parseSolver(const json& j, const std::string& pointer, const SceneReadContext& ctx) {
   const FieldReader r(j, pointer, ctx.file, {"dt", "substeps", "integrator", "newton", "linear_solver", "threads"});
   SolverSpec solver;
   solver.dt = r.number("dt", solver.dt, Bound::Positive);
@@ -335,16 +286,17 @@ SolverSpec parseSolver(const json& j, const std::string& pointer, const Context&
   return solver;
 }
 
-StageSwitches parseStages(const json& j, const std::string& pointer, const Context& ctx) {
-  const FieldReader r(j, pointer, ctx.file, {"bending", "wind", "gravity"});
+StageSwitches parseStages(const json& j, const std::string& pointer, const SceneReadContext& ctx) {
+  const FieldReader r(j, pointer, ctx.file, {"bending", "wind", "gravity", "collision"});
   StageSwitches stages;
+  stages.collision = r.boolean("collision", stages.collision);
   stages.bending = r.boolean("bending", stages.bending);
   stages.wind = r.boolean("wind", stages.wind);
   stages.gravity = r.boolean("gravity", stages.gravity);
   return stages;
 }
 
-OutputSpec parseOutput(const json& j, const std::string& pointer, const Context& ctx) {
+OutputSpec parseOutput(const json& j, const std::string& pointer, const SceneReadContext& ctx) {
   const FieldReader r(j, pointer, ctx.file, {"frames", "fps"});
   OutputSpec output;
   output.frames = r.integer("frames", output.frames, 0);
@@ -471,8 +423,9 @@ void applyOverrides(json& scene, const std::vector<std::string>& overrides, cons
 }
 
 Scene parseScene(const json& j, const fs::path& file, const SearchPaths& paths) {
-  const Context ctx{file.string(), paths};
-  const FieldReader r(j, "", ctx.file, {"name", "description", "cloths", "forces", "solver", "stages", "output"});
+  const SceneReadContext ctx{file.string(), paths};
+  const FieldReader r(j, "", ctx.file, {"name",   "description", "cloths", "forces",   "solver",
+                                              "stages", "output",      "ground", "obstacles", "contact"});
   Scene scene;
   scene.file = file;
   scene.name = r.string("name", file.stem().string());
@@ -495,6 +448,9 @@ Scene parseScene(const json& j, const fs::path& file, const SearchPaths& paths) 
   if (r.has("solver")) scene.solver = parseSolver(r.at("solver"), r.pointer("solver"), ctx);
   if (r.has("stages")) scene.stages = parseStages(r.at("stages"), r.pointer("stages"), ctx);
   if (r.has("output")) scene.output = parseOutput(r.at("output"), r.pointer("output"), ctx);
+  if (r.has("ground")) scene.ground = parseGround(r.at("ground"), r.pointer("ground"), ctx);
+  if (r.has("obstacles")) scene.obstacles = parseObstacles(r.array("obstacles"), r.pointer("obstacles"), ctx);
+  if (r.has("contact")) scene.contact = parseContact(r.at("contact"), r.pointer("contact"), ctx);
   return scene;
 }
 

@@ -1,0 +1,158 @@
+#include "scene/contact_json.h"
+
+#include <filesystem>
+
+namespace weft {
+namespace {
+
+using nlohmann::json;
+namespace fs = std::filesystem;
+
+const char* kShapeExample = "{\"sphere\": {\"radius\": 0.1}}, {\"box\": {\"half_extents\": [x, y, z]}}, "
+                            "{\"capsule\": {...}}, {\"cylinder\": {...}} or {\"mesh\": {\"path\": \"tools/sword.obj\"}}";
+
+ShapeSpec parseShape(const json& j, const std::string& pointer, const SceneReadContext& ctx) {
+  const FieldReader outer(j, pointer, ctx.file, {"sphere", "box", "capsule", "cylinder", "mesh"});
+  if (j.size() != 1) outer.fail(pointer, std::string("needs exactly one shape, e.g. ") + kShapeExample);
+  const std::string kind = j.begin().key();
+  const FieldReader r(j.begin().value(), outer.pointer(kind), ctx.file);
+  ShapeSpec shape;
+  if (kind == "sphere") {
+    r.allowOnly({"radius", "subdivisions"});
+    shape.kind = ShapeKind::Sphere;
+    shape.radius = r.requiredNumber("radius", Bound::Positive, "the sphere's radius (m)");
+    shape.subdivisions = r.integer("subdivisions", shape.subdivisions, 0);
+    if (shape.subdivisions > 6) r.fail(r.pointer("subdivisions"), "must be at most 6 (81,920 triangles)");
+  } else if (kind == "box") {
+    r.allowOnly({"half_extents", "resolution"});
+    shape.kind = ShapeKind::Box;
+    shape.halfExtents = vec3Value(r, r.required("half_extents", "[x, y, z] half extents (m)"), r.pointer("half_extents"));
+    if ((shape.halfExtents.array() <= 0.0).any()) r.fail(r.pointer("half_extents"), "every half extent must be > 0");
+    shape.resolution = r.integer("resolution", shape.resolution, 1);
+  } else if (kind == "capsule" || kind == "cylinder") {
+    r.allowOnly({"radius", "half_length", "segments"});
+    shape.kind = kind == "capsule" ? ShapeKind::Capsule : ShapeKind::Cylinder;
+    shape.radius = r.requiredNumber("radius", Bound::Positive, "the radius (m)");
+    shape.halfLength = r.requiredNumber("half_length", Bound::Positive, "half the length along body y (m)");
+    shape.segments = r.integer("segments", shape.segments, 3);
+  } else {
+    r.allowOnly({"path", "scale", "sharp_tags"});
+    shape.kind = ShapeKind::Mesh;
+    const std::string relative = r.stringValue(r.required("path", "the OBJ file's path (a string)"), r.pointer("path"));
+    shape.meshPath = resolveAsset(relative, r, "path", ctx);
+    shape.scale = r.number("scale", shape.scale, Bound::Positive);
+    if (r.has("sharp_tags")) {
+      const std::string tags = r.stringValue(r.at("sharp_tags"), r.pointer("sharp_tags"));
+      shape.sharpTagsPath = resolveAsset(tags, r, "sharp_tags", ctx);
+    } else {
+      // Tools keep their tags beside their mesh: sword.obj -> sword.sharp.json.
+      fs::path beside = shape.meshPath;
+      beside.replace_extension(".sharp.json");
+      if (fs::is_regular_file(beside)) shape.sharpTagsPath = beside;
+    }
+  }
+  return shape;
+}
+
+std::vector<ObstacleKeyframe> parseKeyframes(const FieldReader& parent, const SceneReadContext& ctx) {
+  const json& keys = parent.array("keyframes");
+  if (keys.empty()) parent.fail(parent.pointer("keyframes"), "must contain at least one key");
+  std::vector<ObstacleKeyframe> out;
+  for (std::size_t k = 0; k < keys.size(); ++k) {
+    const FieldReader r(keys[k], childPointer(parent.pointer("keyframes"), k), ctx.file, {"t", "offset", "rotate_deg"});
+    ObstacleKeyframe key;
+    key.time = r.numberValue(r.required("t", "the key's time in seconds"), r.pointer("t"), Bound::NonNegative);
+    key.offset = vec3(r, "offset", key.offset);
+    key.rotateDeg = vec3(r, "rotate_deg", key.rotateDeg);
+    if (!out.empty() && key.time <= out.back().time) {
+      r.fail(r.pointer("t"), "keys must be in increasing time order; this key's time " + std::to_string(key.time) +
+                                 " does not come after the previous key's " + std::to_string(out.back().time));
+    }
+    out.push_back(key);
+  }
+  return out;
+}
+
+void parseMotion(const json& j, const std::string& pointer, const SceneReadContext& ctx, ObstacleSpec& obstacle) {
+  const char* usage = "must be \"static\", {\"kinematic\": {...}} or {\"dynamic\": {\"mass\": kg}}";
+  if (j.is_string()) {
+    if (j.get<std::string>() != "static") throw InputError(ctx.file, pointer, std::string(usage) + ", " + got(j));
+    obstacle.motion = ObstacleMotion::Static;
+    return;
+  }
+  const FieldReader outer(j, pointer, ctx.file, {"kinematic", "dynamic"});
+  if (j.size() != 1) outer.fail(pointer, usage);
+  const std::string kind = j.begin().key();
+  const FieldReader r(j.begin().value(), outer.pointer(kind), ctx.file);
+  if (kind == "kinematic") {
+    r.allowOnly({"keyframes", "velocity", "angular_velocity_deg"});
+    obstacle.motion = ObstacleMotion::Kinematic;
+    if (r.has("keyframes") && (r.has("velocity") || r.has("angular_velocity_deg"))) {
+      r.fail(r.pointer(), "give either \"keyframes\" or a constant \"velocity\"/\"angular_velocity_deg\", not both");
+    }
+    if (r.has("keyframes")) obstacle.keyframes = parseKeyframes(r, ctx);
+  } else {
+    r.allowOnly({"mass", "velocity", "angular_velocity_deg"});
+    obstacle.motion = ObstacleMotion::Dynamic;
+    obstacle.mass = r.requiredNumber("mass", Bound::Positive, "the body's mass (kg)");
+  }
+  obstacle.velocity = vec3(r, "velocity", obstacle.velocity);
+  obstacle.angularVelocityDeg = vec3(r, "angular_velocity_deg", obstacle.angularVelocityDeg);
+}
+
+ObstacleSpec parseObstacle(const json& j, const std::string& pointer, std::size_t index, const SceneReadContext& ctx) {
+  const FieldReader r(j, pointer, ctx.file, {"name", "shape", "placement", "motion", "friction"});
+  ObstacleSpec obstacle;
+  obstacle.name = r.string("name", "obstacle" + std::to_string(index));
+  requireSafeName(r, "name", obstacle.name);
+  obstacle.shape = parseShape(r.required("shape", kShapeExample), r.pointer("shape"), ctx);
+  if (r.has("placement")) {
+    const FieldReader p(r.at("placement"), r.pointer("placement"), ctx.file, {"translate", "rotate_deg"});
+    obstacle.translate = vec3(p, "translate", obstacle.translate);
+    obstacle.rotateDeg = vec3(p, "rotate_deg", obstacle.rotateDeg);
+  }
+  if (r.has("motion")) parseMotion(r.at("motion"), r.pointer("motion"), ctx, obstacle);
+  obstacle.friction = r.number("friction", obstacle.friction, Bound::NonNegative);
+  return obstacle;
+}
+
+}  // namespace
+
+GroundSpec parseGround(const json& j, const std::string& pointer, const SceneReadContext& ctx) {
+  const FieldReader r(j, pointer, ctx.file, {"height", "friction"});
+  GroundSpec ground;
+  ground.enabled = true;
+  ground.height = r.number("height", ground.height, Bound::Finite);
+  ground.friction = r.number("friction", ground.friction, Bound::NonNegative);
+  return ground;
+}
+
+std::vector<ObstacleSpec> parseObstacles(const json& array, const std::string& pointer, const SceneReadContext& ctx) {
+  std::vector<ObstacleSpec> obstacles;
+  for (std::size_t i = 0; i < array.size(); ++i) {
+    ObstacleSpec obstacle = parseObstacle(array[i], childPointer(pointer, i), i, ctx);
+    for (const auto& other : obstacles) {
+      if (other.name == obstacle.name) {
+        throw InputError(ctx.file, childPointer(childPointer(pointer, i), "name"),
+                         "obstacle names must be unique; \"" + obstacle.name + "\" is used twice");
+      }
+    }
+    obstacles.push_back(std::move(obstacle));
+  }
+  return obstacles;
+}
+
+ContactSpec parseContact(const json& j, const std::string& pointer, const SceneReadContext& ctx) {
+  const FieldReader r(j, pointer, ctx.file,
+                      {"obstacles", "self", "thickness", "self_friction", "ccd_iterations", "impact_zone_iterations"});
+  ContactSpec contact;
+  contact.obstacles = r.boolean("obstacles", contact.obstacles);
+  contact.self = r.boolean("self", contact.self);
+  contact.thickness = r.number("thickness", contact.thickness, Bound::Positive);
+  contact.selfFriction = r.number("self_friction", contact.selfFriction, Bound::NonNegative);
+  contact.ccdIterations = r.integer("ccd_iterations", contact.ccdIterations, 1);
+  contact.impactZoneIterations = r.integer("impact_zone_iterations", contact.impactZoneIterations, 1);
+  return contact;
+}
+
+}  // namespace weft
