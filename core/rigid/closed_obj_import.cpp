@@ -63,8 +63,10 @@ TriangleMesh loadClosedObj(const std::filesystem::path& path) {
   if (!reader.ParseFromString(text, "", config)) throw InputError(file, "", "cannot parse OBJ: " + reader.Error());
   // tinyobjloader only warns about faces it drops or indices it cannot resolve.
   const std::string& warning = reader.Warning();
-  if (warning.find("Degenerated face") != std::string::npos) throw InputError(file, "", "a face has fewer than 3 corners");
-  if (warning.find("out of bounds") != std::string::npos) throw InputError(file, "", "an index is out of range: " + warning);
+  if (warning.find("Degenerated face") != std::string::npos)
+    throw InputError(file, "", "a face has fewer than 3 corners");
+  if (warning.find("out of bounds") != std::string::npos)
+    throw InputError(file, "", "an index is out of range: " + warning);
 
   const tinyobj::attrib_t& attrib = reader.GetAttrib();
   TriangleMesh mesh;
@@ -105,10 +107,10 @@ TriangleMesh loadClosedObj(const std::filesystem::path& path) {
 
   const std::vector<std::string> problems = closedSurfaceProblems(mesh);
   if (!problems.empty()) {
-    throw InputError(file, "", "not the closed surface of a solid: " + problems.front() + " (" +
-                                   std::to_string(problems.size()) +
-                                   " problem(s) in all; vertex ids count `v` lines from 0, triangle ids count fan "
-                                   "triangles in face order)");
+    throw InputError(file, "",
+                     "not the closed surface of a solid: " + problems.front() + " (" + std::to_string(problems.size()) +
+                         " problem(s) in all; vertex ids count `v` lines from 0, triangle ids count fan "
+                         "triangles in face order)");
   }
   const double volume = signedVolume(mesh);
   if (!(volume > 0.0)) {

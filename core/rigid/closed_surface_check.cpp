@@ -52,8 +52,8 @@ void checkEdges(const TriangleMesh& mesh, std::vector<std::string>& problems) {
       problems.push_back(edge + " is shared by " + std::to_string(count) + " triangles (first " + triangle +
                          "): not a 2-manifold");
     } else if (forward != 1) {
-      problems.push_back(edge + " is walked in the same direction by triangles " + std::to_string(uses[first].triangle) +
-                         " and " + std::to_string(uses[first + 1].triangle) +
+      problems.push_back(edge + " is walked in the same direction by triangles " +
+                         std::to_string(uses[first].triangle) + " and " + std::to_string(uses[first + 1].triangle) +
                          ": inconsistent orientation (one of them is flipped)");
     }
     first = end;
@@ -84,7 +84,8 @@ void checkVertexFans(const TriangleMesh& mesh, std::vector<std::string>& problem
       ++visited;
     } while (at != fan.front()[0] && visited <= static_cast<int>(fan.size()));
     if (visited < static_cast<int>(fan.size())) {
-      problems.push_back("vertex " + std::to_string(v) + " joins separate fans of triangles (the surface touches itself there)");
+      problems.push_back("vertex " + std::to_string(v) +
+                         " joins separate fans of triangles (the surface touches itself there)");
     }
   }
 }
@@ -116,7 +117,8 @@ std::vector<std::string> closedSurfaceProblems(const TriangleMesh& mesh) {
       problems.push_back(name + " repeats a vertex");
       idsValid = false;
     } else {
-      const Vec3 doubleArea = (mesh.vertices[tri[1]] - mesh.vertices[tri[0]]).cross(mesh.vertices[tri[2]] - mesh.vertices[tri[0]]);
+      const Vec3 doubleArea =
+          (mesh.vertices[tri[1]] - mesh.vertices[tri[0]]).cross(mesh.vertices[tri[2]] - mesh.vertices[tri[0]]);
       if (!(doubleArea.norm() > minDoubleArea)) problems.push_back(name + " has zero area");
     }
   }
@@ -124,8 +126,9 @@ std::vector<std::string> closedSurfaceProblems(const TriangleMesh& mesh) {
 
   const size_t before = problems.size();
   checkEdges(mesh, problems);
-  if (problems.size() == before) checkVertexFans(mesh, problems);
-  else {
+  if (problems.size() == before) {
+    checkVertexFans(mesh, problems);
+  } else {
     // Unused vertices are worth reporting even when edges are broken.
     std::vector<char> used(n, 0);
     for (const std::array<int, 3>& t : mesh.triangles)

@@ -15,8 +15,8 @@ RigidPose keyframePose(const KeyframeMotion& motion, double time) {
   if (time <= keys.front().time) return poseOf(keys.front());
   if (time >= keys.back().time) return poseOf(keys.back());
   // The first key after `time`; the one before it exists since time > keys.front().time.
-  const auto after = std::upper_bound(keys.begin(), keys.end(), time,
-                                      [](double t, const PoseKey& key) { return t < key.time; });
+  const auto after =
+      std::upper_bound(keys.begin(), keys.end(), time, [](double t, const PoseKey& key) { return t < key.time; });
   const PoseKey& a = *(after - 1);
   const PoseKey& b = *after;
   assert(b.time > a.time);
@@ -36,8 +36,8 @@ RigidPose constantVelocityPose(const ConstantVelocityMotion& motion, double time
   const Vec3 omega = motion.angularVelocityDeg * (kPi / 180.0);  // rad/s
   const double speed = omega.norm();
   const Eigen::Quaterniond start = rotationFromDegrees(motion.rotateDeg);
-  pose.orientation = speed == 0.0 ? start
-                                  : (Eigen::Quaterniond(Eigen::AngleAxisd(speed * time, omega / speed)) * start).normalized();
+  pose.orientation =
+      speed == 0.0 ? start : (Eigen::Quaterniond(Eigen::AngleAxisd(speed * time, omega / speed)) * start).normalized();
   return pose;
 }
 

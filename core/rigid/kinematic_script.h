@@ -15,9 +15,9 @@
 namespace weft {
 
 struct PoseKey {
-  double time = 0.0;                // s
-  Vec3 translate = Vec3::Zero();    // m, world position of the body-frame origin
-  Vec3 rotateDeg = Vec3::Zero();    // rotation about world x, then y, then z (degrees), as the cloth Placement
+  double time = 0.0;              // s
+  Vec3 translate = Vec3::Zero();  // m, world position of the body-frame origin
+  Vec3 rotateDeg = Vec3::Zero();  // rotation about world x, then y, then z (degrees), as the cloth Placement
 };
 
 // Keys in strictly increasing time, at least one. Slerp takes the short way between neighbouring

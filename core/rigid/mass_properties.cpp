@@ -15,9 +15,9 @@ namespace {
 // The three volume integrals over the solid, taken about `reference` (see the header).
 struct VolumeIntegrals {
   Vec3 reference = Vec3::Zero();
-  double volume = 0.0;                 // ∫ 1
-  Vec3 firstMoment = Vec3::Zero();     // ∫ (x - reference)
-  Mat3 secondMoment = Mat3::Zero();    // ∫ (x - reference)(x - reference)ᵀ
+  double volume = 0.0;               // ∫ 1
+  Vec3 firstMoment = Vec3::Zero();   // ∫ (x - reference)
+  Mat3 secondMoment = Mat3::Zero();  // ∫ (x - reference)(x - reference)ᵀ
 };
 
 Vec3 boundingBoxCentre(const TriangleMesh& mesh) {
@@ -42,7 +42,8 @@ VolumeIntegrals integrate(const TriangleMesh& mesh, bool withSecondMoment) {
     sums.volume += d / 6.0;
     sums.firstMoment += (d / 24.0) * sum;
     if (withSecondMoment) {
-      sums.secondMoment += (d / 120.0) * (p * p.transpose() + q * q.transpose() + s * s.transpose() + sum * sum.transpose());
+      sums.secondMoment +=
+          (d / 120.0) * (p * p.transpose() + q * q.transpose() + s * s.transpose() + sum * sum.transpose());
     }
   }
   return sums;
@@ -52,8 +53,9 @@ void requirePositiveVolume(double volume, const std::string& meshName) {
   if (volume > 0.0) return;
   std::ostringstream what;
   what << "encloses a volume of " << volume << " m^3; ";
-  what << (volume < 0.0 ? "its triangles are turned inward (clockwise seen from outside): reverse every triangle's vertex order"
-                        : "a solid needs a closed surface around a non-zero volume");
+  what << (volume < 0.0
+               ? "its triangles are turned inward (clockwise seen from outside): reverse every triangle's vertex order"
+               : "a solid needs a closed surface around a non-zero volume");
   throw InputError(meshName, "", what.str());
 }
 

@@ -24,10 +24,10 @@
 namespace weft {
 
 struct MassProperties {
-  double volume = 0.0;                 // m^3
-  double mass = 0.0;                   // kg
-  Vec3 centreOfMass = Vec3::Zero();    // m, body frame
-  Mat3 inertia = Mat3::Zero();         // kg m^2, about the centre of mass, along the body axes
+  double volume = 0.0;               // m^3
+  double mass = 0.0;                 // kg
+  Vec3 centreOfMass = Vec3::Zero();  // m, body frame
+  Mat3 inertia = Mat3::Zero();       // kg m^2, about the centre of mass, along the body axes
 };
 
 // The volume enclosed by a closed mesh: positive when its triangles face outward, negative when

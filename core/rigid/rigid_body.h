@@ -32,14 +32,14 @@ struct RigidState {
 };
 
 struct RigidBody {
-  double mass = 1.0;                     // kg, > 0; kInfiniteMass for a kinematic body
-  Mat3 inertiaBody = Mat3::Identity();   // kg m^2, about the centre of mass, body axes; ignored when kinematic
+  double mass = 1.0;                    // kg, > 0; kInfiniteMass for a kinematic body
+  Mat3 inertiaBody = Mat3::Identity();  // kg m^2, about the centre of mass, body axes; ignored when kinematic
   RigidState state;
 
   bool isKinematic() const { return mass == kInfiniteMass; }
-  double inverseMass() const;            // 1/kg; 0 when kinematic
-  Mat3 inverseInertiaBody() const;       // 1/(kg m^2), body axes; 0 when kinematic
-  Mat3 inverseInertiaWorld() const;      // R I⁻¹ Rᵀ for the current orientation; 0 when kinematic
+  double inverseMass() const;        // 1/kg; 0 when kinematic
+  Mat3 inverseInertiaBody() const;   // 1/(kg m^2), body axes; 0 when kinematic
+  Mat3 inverseInertiaWorld() const;  // R I⁻¹ Rᵀ for the current orientation; 0 when kinematic
 
   // Velocity of the body point now at `worldPoint`: v + ω × (worldPoint - position).
   Vec3 velocityAt(const Vec3& worldPoint) const;
@@ -62,9 +62,9 @@ struct RigidBody {
   void advancePose(double dt);
 
   // Dynamic bodies only (the values are infinite for a kinematic one).
-  double kineticEnergy() const;          // J
-  Vec3 linearMomentum() const;           // kg m/s
-  Vec3 angularMomentum() const;          // kg m^2/s, about the centre of mass, world frame
+  double kineticEnergy() const;  // J
+  Vec3 linearMomentum() const;   // kg m/s
+  Vec3 angularMomentum() const;  // kg m^2/s, about the centre of mass, world frame
 };
 
 // A dynamic body with the mass and inertia of `properties`; the mesh they came from must already

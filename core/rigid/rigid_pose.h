@@ -8,7 +8,7 @@
 namespace weft {
 
 struct RigidPose {
-  Vec3 position = Vec3::Zero();                                  // m, world position of the body-frame origin
+  Vec3 position = Vec3::Zero();                                     // m, world position of the body-frame origin
   Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();  // unit; body frame -> world
 
   Vec3 toWorld(const Vec3& bodyPoint) const { return orientation * bodyPoint + position; }

@@ -113,7 +113,8 @@ TriangleMesh makeBoxMesh(const BoxShape& shape) {
   // Cells per axis, and the lattice of (cells + 1)^3 points whose surface points become vertices.
   std::array<int, 3> cells{1, 1, 1};
   if (shape.maxCellSize > 0.0) {
-    for (int a = 0; a < 3; ++a) cells[a] = std::max(1, static_cast<int>(std::ceil(2.0 * shape.halfExtents[a] / shape.maxCellSize - 1e-9)));
+    for (int a = 0; a < 3; ++a)
+      cells[a] = std::max(1, static_cast<int>(std::ceil(2.0 * shape.halfExtents[a] / shape.maxCellSize - 1e-9)));
   }
   TriangleMesh mesh;
   std::vector<int> vertexOf(static_cast<size_t>(cells[0] + 1) * (cells[1] + 1) * (cells[2] + 1), -1);
@@ -163,13 +164,13 @@ TriangleMesh makeCapsuleMesh(const CapsuleShape& shape) {
   // +halfLength (skipped when it coincides with the bottom one).
   for (int j = 1; j <= latitudeRings; ++j) {
     const double latitude = -0.5 * kPi + 0.5 * kPi * j / latitudeRings;
-    rings.push_back(addRing(mesh, shape.radius * std::cos(latitude), -shape.halfLength + shape.radius * std::sin(latitude),
-                            shape.segments));
+    rings.push_back(addRing(mesh, shape.radius * std::cos(latitude),
+                            -shape.halfLength + shape.radius * std::sin(latitude), shape.segments));
   }
   for (int j = shape.halfLength > 0.0 ? 0 : 1; j < latitudeRings; ++j) {
     const double latitude = 0.5 * kPi * j / latitudeRings;
-    rings.push_back(addRing(mesh, shape.radius * std::cos(latitude), shape.halfLength + shape.radius * std::sin(latitude),
-                            shape.segments));
+    rings.push_back(addRing(mesh, shape.radius * std::cos(latitude),
+                            shape.halfLength + shape.radius * std::sin(latitude), shape.segments));
   }
   const int topPole = addVertex(mesh, Vec3(0.0, shape.halfLength + shape.radius, 0.0));
   fanToRing(mesh, bottomPole, rings.front(), shape.segments, /*facingUp=*/false);

@@ -23,9 +23,9 @@ struct BoxShape {
 
 // A cylinder along body y with two hemispherical ends.
 struct CapsuleShape {
-  double radius = 0.05;      // m
-  double halfLength = 0.1;   // m, half the length of the cylindrical part (0: a sphere)
-  int segments = 16;         // vertices around y; each hemisphere gets segments / 4 rings of latitude
+  double radius = 0.05;     // m
+  double halfLength = 0.1;  // m, half the length of the cylindrical part (0: a sphere)
+  int segments = 16;        // vertices around y; each hemisphere gets segments / 4 rings of latitude
 };
 
 // A cylinder along body y with flat caps (columns, posts).

@@ -53,7 +53,9 @@ std::vector<int> readVertices(const FieldReader& r, int vertexCount) {
     const std::string at = childPointer(r.pointer(kVerticesKey), i);
     const int id = vertexId(r, list[i], at, vertexCount);
     const auto [it, isNew] = firstIndexOf.try_emplace(id, i);
-    if (!isNew) r.fail(at, "vertex " + std::to_string(id) + " is listed twice (also at index " + std::to_string(it->second) + ")");
+    if (!isNew)
+      r.fail(at,
+             "vertex " + std::to_string(id) + " is listed twice (also at index " + std::to_string(it->second) + ")");
     vertices.push_back(id);
   }
   std::sort(vertices.begin(), vertices.end());
@@ -79,7 +81,8 @@ std::vector<std::array<int, 2>> readEdges(const FieldReader& r, const TriangleMe
       r.fail(at, asText({a, b}) + " is not an edge of the mesh (no triangle has both vertices next to each other)");
     }
     const auto [it, isNew] = firstIndexOf.try_emplace(edge, i);
-    if (!isNew) r.fail(at, "edge " + asText(edge) + " is listed twice (also at index " + std::to_string(it->second) + ")");
+    if (!isNew)
+      r.fail(at, "edge " + asText(edge) + " is listed twice (also at index " + std::to_string(it->second) + ")");
     edges.push_back(edge);
   }
   std::sort(edges.begin(), edges.end());

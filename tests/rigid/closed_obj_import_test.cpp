@@ -77,7 +77,8 @@ TEST(RigidObjImport, RejectsBadFiles) {
   expectRejected(test::writeScratchFile("text.obj", std::string("v 1 x 0\n") + kCube), "line 1", "'x' is not a number");
   expectRejected(test::writeScratchFile("range.obj", std::string(kCube) + "f 1 2 9\n"), "", "out of range");
   expectRejected(test::writeScratchFile("empty.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n"), "", "has no faces");
-  expectRejected(test::writeScratchFile("stray.obj", std::string(kCube) + "v 5 5 5\n"), "", "vertex 8 is in no triangle");
+  expectRejected(test::writeScratchFile("stray.obj", std::string(kCube) + "v 5 5 5\n"), "",
+                 "vertex 8 is in no triangle");
 }
 
 }  // namespace

@@ -76,7 +76,7 @@ TEST(RigidClosedSurface, EachDefectIsNamed) {
 // Two tetrahedra sharing only a corner: every edge is fine, but the corner joins two separate fans.
 TEST(RigidClosedSurface, SurfacesTouchingAtAVertexAreRejected) {
   TriangleMesh mesh = tetrahedron();
-  const TriangleMesh other = tetrahedron(Vec3(1, 0, 0));  // its vertex 0 is our vertex 1
+  const TriangleMesh other = tetrahedron(Vec3(1, 0, 0));                   // its vertex 0 is our vertex 1
   for (int v = 1; v < 4; ++v) mesh.vertices.push_back(other.vertices[v]);  // ids 4, 5, 6
   auto id = [](int v) { return v == 0 ? 1 : v + 3; };
   for (const auto& t : other.triangles) mesh.triangles.push_back({id(t[0]), id(t[1]), id(t[2])});

@@ -13,12 +13,13 @@ using Eigen::AngleAxisd;
 using Eigen::Quaterniond;
 
 void expectVecNear(const Vec3& actual, const Vec3& expected, double tolerance) {
-  EXPECT_LE((actual - expected).norm(), tolerance) << "actual " << actual.transpose() << ", expected " << expected.transpose();
+  EXPECT_LE((actual - expected).norm(), tolerance)
+      << "actual " << actual.transpose() << ", expected " << expected.transpose();
 }
 
 void expectRotationNear(const Quaterniond& actual, const Quaterniond& expected, double tolerance) {
-  EXPECT_LE(actual.angularDistance(expected), tolerance) << "actual " << actual.coeffs().transpose() << ", expected "
-                                                         << expected.coeffs().transpose();
+  EXPECT_LE(actual.angularDistance(expected), tolerance)
+      << "actual " << actual.coeffs().transpose() << ", expected " << expected.coeffs().transpose();
 }
 
 Quaterniond aboutZ(double degrees) { return Quaterniond(AngleAxisd(degToRad(degrees), Vec3::UnitZ())); }
@@ -49,7 +50,8 @@ TEST(KinematicScript, KeyframesInterpolateLinearlyAndBySlerp) {
 }
 
 TEST(KinematicScript, KeyframesAreHeldBeforeTheFirstAndAfterTheLast) {
-  const KinematicScript script = KeyframeMotion{{{1.0, Vec3(1, 2, 3), Vec3(10, 0, 0)}, {2.0, Vec3(4, 5, 6), Vec3(0, 30, 0)}}};
+  const KinematicScript script =
+      KeyframeMotion{{{1.0, Vec3(1, 2, 3), Vec3(10, 0, 0)}, {2.0, Vec3(4, 5, 6), Vec3(0, 30, 0)}}};
   for (const double t : {-5.0, 0.0, 1.0}) {
     expectVecNear(poseAt(script, t).position, Vec3(1, 2, 3), 0.0);
     expectRotationNear(poseAt(script, t).orientation, rotationFromDegrees(Vec3(10, 0, 0)), 1e-15);
@@ -64,11 +66,13 @@ TEST(KinematicScript, KeyframesAreHeldBeforeTheFirstAndAfterTheLast) {
 
 // From 170 to -170 degrees about z the short way is through 180 (20 degrees), not through 0 (340).
 TEST(KinematicScript, SlerpTakesTheShortWay) {
-  const KinematicScript script = KeyframeMotion{{{0.0, Vec3::Zero(), Vec3(0, 0, 170)}, {1.0, Vec3::Zero(), Vec3(0, 0, -170)}}};
+  const KinematicScript script =
+      KeyframeMotion{{{0.0, Vec3::Zero(), Vec3(0, 0, 170)}, {1.0, Vec3::Zero(), Vec3(0, 0, -170)}}};
   expectRotationNear(poseAt(script, 0.5).orientation, aboutZ(180), 1e-14);
   expectRotationNear(poseAt(script, 0.25).orientation, aboutZ(175), 1e-14);
   // Also when the two keys' quaternions have opposite signs for nearby rotations.
-  const KinematicScript wrapped = KeyframeMotion{{{0.0, Vec3::Zero(), Vec3(0, 0, 350)}, {1.0, Vec3::Zero(), Vec3(0, 0, 10)}}};
+  const KinematicScript wrapped =
+      KeyframeMotion{{{0.0, Vec3::Zero(), Vec3(0, 0, 350)}, {1.0, Vec3::Zero(), Vec3(0, 0, 10)}}};
   expectRotationNear(poseAt(wrapped, 0.5).orientation, aboutZ(0), 1e-14);
 }
 
@@ -117,7 +121,8 @@ TEST(KinematicScript, StepMotionMovesBodyPointsFromPoseToPose) {
 }
 
 TEST(KinematicScript, StepAngularVelocityTakesTheShortWayBetweenKeys) {
-  const KinematicScript script = KeyframeMotion{{{0.0, Vec3::Zero(), Vec3(0, 0, 170)}, {1.0, Vec3::Zero(), Vec3(0, 0, -170)}}};
+  const KinematicScript script =
+      KeyframeMotion{{{0.0, Vec3::Zero(), Vec3(0, 0, 170)}, {1.0, Vec3::Zero(), Vec3(0, 0, -170)}}};
   const PoseChange step = motionBetween(script, 0.0, 1.0);
   expectVecNear(step.angularVelocity(), Vec3(0, 0, degToRad(20)), 1e-13);
   expectVecNear(motionBetween(script, 2.0, 3.0).angularVelocity(), Vec3::Zero(), 0.0);  // held

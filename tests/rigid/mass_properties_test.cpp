@@ -58,7 +58,8 @@ TEST(MassProperties, RigidMotionOfTheMesh) {
 TEST(MassProperties, TranslationLeavesInertiaAboutTheCentreOfMassUnchanged) {
   const TriangleMesh capsule = makeCapsuleMesh({0.05, 0.2, 16});
   const MassProperties here = computeMassProperties(capsule, 800.0, "capsule");
-  const MassProperties there = computeMassProperties(test::translated(capsule, Vec3(3.0, -7.0, 11.0)), 800.0, "capsule");
+  const MassProperties there =
+      computeMassProperties(test::translated(capsule, Vec3(3.0, -7.0, 11.0)), 800.0, "capsule");
   EXPECT_NEAR(there.mass, here.mass, 1e-13 * here.mass);
   expectMatrixNear(there.inertia, here.inertia, 1e-12 * here.inertia.norm());
   EXPECT_NEAR((there.centreOfMass - here.centreOfMass - Vec3(3.0, -7.0, 11.0)).norm(), 0.0, 1e-13);
@@ -84,7 +85,8 @@ TEST(MassProperties, HollowSolidSubtractsItsCavity) {
     const Vec3 d = centre - com;
     return Mat3(boxInertia(m, size) + m * (d.squaredNorm() * Mat3::Identity() - d * d.transpose()));
   };
-  expectMatrixNear(p.inertia, shifted(mOuter, outer, Vec3::Zero()) - shifted(mInner, inner, Vec3(0.1, 0.0, 0.05)), 1e-15);
+  expectMatrixNear(p.inertia, shifted(mOuter, outer, Vec3::Zero()) - shifted(mInner, inner, Vec3(0.1, 0.0, 0.05)),
+                   1e-15);
 }
 
 TEST(MassProperties, InertiaIsSymmetricPositiveDefiniteAndObeysTheTriangleInequality) {

@@ -24,7 +24,8 @@ RigidBody tiltedBox() {
 }
 
 void expectVecNear(const Vec3& actual, const Vec3& expected, double tolerance) {
-  EXPECT_LE((actual - expected).norm(), tolerance) << "actual " << actual.transpose() << ", expected " << expected.transpose();
+  EXPECT_LE((actual - expected).norm(), tolerance)
+      << "actual " << actual.transpose() << ", expected " << expected.transpose();
 }
 
 TEST(RigidBody, ImpulseChangesMomentaByTheImpulseAndItsMoment) {
@@ -39,8 +40,8 @@ TEST(RigidBody, ImpulseChangesMomentaByTheImpulseAndItsMoment) {
 TEST(RigidBody, VelocityOfAPoint) {
   const RigidBody body = tiltedBox();
   const Vec3 r(0.1, -0.2, 0.3);
-  expectVecNear(body.velocityAt(body.state.position + r), body.state.linearVelocity + body.state.angularVelocity.cross(r),
-                1e-15);
+  expectVecNear(body.velocityAt(body.state.position + r),
+                body.state.linearVelocity + body.state.angularVelocity.cross(r), 1e-15);
   expectVecNear(body.velocityAt(body.state.position), body.state.linearVelocity, 0.0);
 }
 
@@ -116,7 +117,7 @@ TEST(RigidBody, SpinAboutTheIntermediateAxisFlipsOver) {
   body.state.angularVelocity = body.state.orientation * Vec3(0.003, 3.0, 0.0);
   const Vec3 l0 = body.angularMomentum();
   const double e0 = body.kineticEnergy() - 0.5 * body.mass * body.state.linearVelocity.squaredNorm();
-  double lowest = 1.0;  // of the body y axis along the angular momentum
+  double lowest = 1.0;              // of the body y axis along the angular momentum
   for (int i = 0; i < 2400; ++i) {  // 10 s; the wobble reaches O(1) after ln(1000) / λ ≈ 5 s
     body.advancePose(1.0 / 240.0);
     lowest = std::min(lowest, (body.state.orientation * Vec3::UnitY()).dot(l0.normalized()));
@@ -140,9 +141,11 @@ TEST(RigidBody, RotationStepsMatchTheClosedForm) {
   const int steps = 10000;
   for (int i = 0; i < steps; ++i) body.advancePose(dt);
   const Vec3 omega = body.state.angularVelocity;
-  const Eigen::Quaterniond exact = Eigen::Quaterniond(Eigen::AngleAxisd(omega.norm() * steps * dt, omega.normalized())) * start;
+  const Eigen::Quaterniond exact =
+      Eigen::Quaterniond(Eigen::AngleAxisd(omega.norm() * steps * dt, omega.normalized())) * start;
   const double error = body.state.orientation.angularDistance(exact);
-  std::printf("[   info   ] 10^4 rotation steps of |w| dt = %.4f rad: angle error %.2e rad\n", omega.norm() * dt, error);
+  std::printf("[   info   ] 10^4 rotation steps of |w| dt = %.4f rad: angle error %.2e rad\n", omega.norm() * dt,
+              error);
   EXPECT_LT(error, 1e-11);
 }
 
@@ -172,7 +175,8 @@ TEST(RigidBody, KinematicBodyIsUnmovedByImpulsesAndGravity) {
   // It still moves with its own velocities.
   body.advancePose(0.5);
   expectVecNear(body.state.position, Vec3(1.25, 2, 3), 1e-15);
-  EXPECT_NEAR(body.state.orientation.angularDistance(Eigen::Quaterniond(Eigen::AngleAxisd(1.0, Vec3::UnitY()))), 0.0, 1e-15);
+  EXPECT_NEAR(body.state.orientation.angularDistance(Eigen::Quaterniond(Eigen::AngleAxisd(1.0, Vec3::UnitY()))), 0.0,
+              1e-15);
   EXPECT_EQ(body.state.angularVelocity, state.angularVelocity);
   EXPECT_FALSE(tiltedBox().isKinematic());
 }

@@ -89,10 +89,12 @@ TEST(ShapeMeshes, BoxIsExactAndSplitsLargeFaces) {
   const TriangleMesh split = makeBoxMesh({half, 0.1});  // cells: 10 x 4 x 1
   const int nx = 10, ny = 4, nz = 1;
   EXPECT_EQ(split.triangles.size(), static_cast<size_t>(4 * (nx * ny + ny * nz + nz * nx)));
-  EXPECT_EQ(split.vertices.size(), static_cast<size_t>((nx + 1) * (ny + 1) * (nz + 1) - (nx - 1) * (ny - 1) * (nz - 1)));
+  EXPECT_EQ(split.vertices.size(),
+            static_cast<size_t>((nx + 1) * (ny + 1) * (nz + 1) - (nx - 1) * (ny - 1) * (nz - 1)));
   expectClosedConvexOutward(split);
   for (const auto& t : split.triangles)
-    for (int k = 0; k < 3; ++k) EXPECT_LE((split.vertices[t[k]] - split.vertices[t[(k + 1) % 3]]).norm(), 0.1 * std::sqrt(2.0) + 1e-12);
+    for (int k = 0; k < 3; ++k)
+      EXPECT_LE((split.vertices[t[k]] - split.vertices[t[(k + 1) % 3]]).norm(), 0.1 * std::sqrt(2.0) + 1e-12);
 
   for (const TriangleMesh* mesh : {&single, &split}) {
     for (const Vec3& v : mesh->vertices) EXPECT_TRUE(((v.cwiseAbs() - half).array().abs() < 1e-15).any());  // on a face
@@ -133,7 +135,8 @@ TEST(ShapeMeshes, CapsuleIsClosedOutwardAndNearTheSmoothShape) {
     const double smooth = kPi * 0.0025 * 2.0 * halfLength + 4.0 / 3.0 * kPi * 0.05 * 0.05 * 0.05;
     const MassProperties p = computeMassProperties(mesh, 1.0, "capsule");
     const double error = relativeError(p.volume, smooth);
-    std::printf("[   info   ] capsule, 24 segments, half length %.2f: volume error %+.3f%%\n", halfLength, 100.0 * error);
+    std::printf("[   info   ] capsule, 24 segments, half length %.2f: volume error %+.3f%%\n", halfLength,
+                100.0 * error);
     EXPECT_LT(error, 0.0);
     EXPECT_GT(error, -0.03);
     EXPECT_NEAR(p.centreOfMass.norm(), 0.0, 1e-15);

@@ -39,7 +39,8 @@ void expectRejected(const std::string& json, const std::string& field, std::init
     const std::string what = e.what();
     EXPECT_EQ(e.file(), path.string()) << what;
     EXPECT_EQ(e.field(), field) << what;
-    for (const std::string& word : mentions) EXPECT_NE(what.find(word), std::string::npos) << "'" << word << "' in: " << what;
+    for (const std::string& word : mentions)
+      EXPECT_NE(what.find(word), std::string::npos) << "'" << word << "' in: " << what;
   }
 }
 
@@ -67,7 +68,8 @@ TEST(SharpTags, LoadsAndCanonicalises) {
 TEST(SharpTags, RejectsEachKindOfBadInput) {
   const std::vector<std::array<int, 2>> edges = undirectedEdges(box());
   const std::string a = std::to_string(edges[0][0]), b = std::to_string(edges[0][1]);
-  expectRejected("{\"sharp_vertex\": [1]}", "/sharp_vertex", {"unknown key \"sharp_vertex\"", "allowed keys here: sharp_vertices, sharp_edges"});
+  expectRejected("{\"sharp_vertex\": [1]}", "/sharp_vertex",
+                 {"unknown key \"sharp_vertex\"", "allowed keys here: sharp_vertices, sharp_edges"});
   expectRejected("[1, 2]", "", {"must be a JSON object"});
   expectRejected("{\"sharp_vertices\": 3}", "/sharp_vertices", {"must be an array"});
   expectRejected("{\"sharp_vertices\": [1, \"2\"]}", "/sharp_vertices/1", {"integer", "got string \"2\""});
@@ -88,7 +90,8 @@ TEST(SharpTags, RejectsEachKindOfBadInput) {
   for (int v = 0; v < 8; ++v)
     if ((box().vertices[v] + box().vertices[0]).norm() < 1e-12) far = v;
   ASSERT_GE(far, 0);
-  expectRejected("{\"sharp_edges\": [[0, " + std::to_string(far) + "]]}", "/sharp_edges/0", {"is not an edge of the mesh"});
+  expectRejected("{\"sharp_edges\": [[0, " + std::to_string(far) + "]]}", "/sharp_edges/0",
+                 {"is not an edge of the mesh"});
 }
 
 TEST(SharpTags, SaveIsCanonicalAndRoundTrips) {

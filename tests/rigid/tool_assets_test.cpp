@@ -39,7 +39,8 @@ Bounds boundsOf(const TriangleMesh& mesh) {
 }
 
 void expectVecNear(const Vec3& actual, const Vec3& expected, double tolerance) {
-  EXPECT_LE((actual - expected).norm(), tolerance) << "actual " << actual.transpose() << ", expected " << expected.transpose();
+  EXPECT_LE((actual - expected).norm(), tolerance)
+      << "actual " << actual.transpose() << ", expected " << expected.transpose();
 }
 
 // Loading checks closed, 2-manifold and outward; here also: the centre of mass lies inside the
@@ -49,7 +50,8 @@ MassProperties expectSaneSolid(const TriangleMesh& mesh, const std::string& name
   EXPECT_TRUE(closedSurfaceProblems(mesh).empty()) << name;
   const MassProperties p = computeMassProperties(mesh, 1000.0, name);
   const Bounds b = boundsOf(mesh);
-  EXPECT_TRUE((p.centreOfMass.array() > b.low.array()).all() && (p.centreOfMass.array() < b.high.array()).all()) << name;
+  EXPECT_TRUE((p.centreOfMass.array() > b.low.array()).all() && (p.centreOfMass.array() < b.high.array()).all())
+      << name;
   EXPECT_LT(p.volume, (b.high - b.low).prod()) << name;
   EXPECT_LE((p.inertia - p.inertia.transpose()).cwiseAbs().maxCoeff(), 0.0) << name;
   const Vec3 principal = Eigen::SelfAdjointEigenSolver<Mat3>(p.inertia).eigenvalues();
@@ -88,7 +90,7 @@ TEST(ToolAssets, HammerHasItsHeadAtPlusY) {
   const Bounds b = boundsOf(hammer);
   EXPECT_NEAR(b.high.y() - b.low.y(), 0.4, 1e-9);
   expectVecNear(b.high, Vec3(0.07, 0.2, 0.025), 1e-9);  // the head's corner
-  EXPECT_GT(p.centreOfMass.y(), 0.0);                  // the head outweighs the handle
+  EXPECT_GT(p.centreOfMass.y(), 0.0);                   // the head outweighs the handle
   EXPECT_NEAR(p.centreOfMass.x(), 0.0, 1e-10);
   EXPECT_TRUE(loadSharpTags(sharpTagsPathFor(toolPath("hammer.obj")), hammer).empty());
 }
@@ -99,7 +101,7 @@ TEST(ToolAssets, SwordBladeAlongPlusYWithOriginAtTheGrip) {
   const Bounds b = boundsOf(sword);
   EXPECT_NEAR(b.high.y(), 0.91, 1e-9);  // the tip: 0.8 m of blade above the guard at y = 0.11
   EXPECT_NEAR(b.low.y(), -0.125, 1e-9);
-  EXPECT_NEAR(b.high.x(), 0.1, 1e-9);   // the guard
+  EXPECT_NEAR(b.high.x(), 0.1, 1e-9);  // the guard
   // The origin is the centre of the grip: the section through it is the grip's, radius 0.0155.
   int gripSection = 0;
   for (const Vec3& v : sword.vertices) {
@@ -141,7 +143,7 @@ TEST(ToolAssets, SwordTagsItsTipAndTwoCuttingEdges) {
     int previous = tip, at = start, length = 1;
     while (neighbours[at].size() == 2 && length < 100) {  // bounded, should the tags form a loop
       const int next = neighbours[at][0] == previous ? neighbours[at][1] : neighbours[at][0];
-      EXPECT_LT(sword.vertices[next].y(), sword.vertices[at].y());  // descending from the tip
+      EXPECT_LT(sword.vertices[next].y(), sword.vertices[at].y());           // descending from the tip
       EXPECT_GT(sword.vertices[next].x() * sword.vertices[start].x(), 0.0);  // on one side all along
       previous = at;
       at = next;
