@@ -65,7 +65,8 @@ def check_solid(name, vertices, triangles):
     for t, tri in enumerate(triangles):
         if len(set(tri)) != 3:
             raise ValueError(f"{name}: triangle {t} repeats a vertex")
-        if math.sqrt(dot(*(triangle_normal(vertices, tri),) * 2)) < 1e-12:
+        normal = triangle_normal(vertices, tri)  # twice the area, as a vector
+        if dot(normal, normal) < 1e-24:
             raise ValueError(f"{name}: triangle {t} has zero area")
         for k in range(3):
             edge = (tri[k], tri[(k + 1) % 3])
