@@ -1,0 +1,125 @@
+#include "rigid/closed_obj_import.h"
+
+// Linked against tinyobjloader::tinyobjloader_double (core/CMakeLists.txt), so tinyobj::real_t is
+// double; nothing here depends on which.
+#include <tiny_obj_loader.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "rigid/closed_surface_check.h"
+#include "rigid/mass_properties.h"
+#include "util/input_error.h"
+
+namespace weft {
+
+namespace {
+
+std::string readText(const std::filesystem::path& path) {
+  if (!std::filesystem::is_regular_file(path)) throw InputError(path.string(), "", "mesh file not found");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path.string(), "", "cannot open mesh file");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// tinyobjloader reads a malformed or "nan" coordinate as 0 without a word; a tool's shape would
+// change silently. (The cloth loader, mesh/obj_import.cpp, checks its `v` and `vt` lines the same way.)
+void requireNumericPositions(const std::string& text, const std::string& file) {
+  std::istringstream lines(text);
+  std::string line;
+  for (int lineNumber = 1; std::getline(lines, line); ++lineNumber) {
+    std::istringstream tokens(line);
+    std::string keyword;
+    tokens >> keyword;
+    if (keyword != "v") continue;
+    std::string token;
+    while (tokens >> token) {
+      if (token[0] == '#') break;  // trailing comment
+      char* end = nullptr;
+      const double value = std::strtod(token.c_str(), &end);
+      const std::string where = "line " + std::to_string(lineNumber);
+      if (end != token.c_str() + token.size()) throw InputError(file, where, "'" + token + "' is not a number");
+      if (!std::isfinite(value)) throw InputError(file, where, "non-finite value '" + token + "'");
+    }
+  }
+}
+
+}  // namespace
+
+TriangleMesh loadClosedObj(const std::filesystem::path& path) {
+  const std::string file = path.string();
+  const std::string text = readText(path);
+  requireNumericPositions(text, file);
+
+  tinyobj::ObjReaderConfig config;
+  config.triangulate = false;  // fanned below, so face numbers in messages match the file's `f` lines
+  config.vertex_color = false;
+  tinyobj::ObjReader reader;
+  if (!reader.ParseFromString(text, "", config)) throw InputError(file, "", "cannot parse OBJ: " + reader.Error());
+  // tinyobjloader only warns about faces it drops or indices it cannot resolve.
+  const std::string& warning = reader.Warning();
+  if (warning.find("Degenerated face") != std::string::npos)
+    throw InputError(file, "", "a face has fewer than 3 corners");
+  if (warning.find("out of bounds") != std::string::npos)
+    throw InputError(file, "", "an index is out of range: " + warning);
+
+  const tinyobj::attrib_t& attrib = reader.GetAttrib();
+  TriangleMesh mesh;
+  // attrib.vertices holds the `v` lines in file order: vertex i of the mesh is `v` line i.
+  for (size_t p = 0; p + 2 < attrib.vertices.size(); p += 3) {
+    const Vec3 position(static_cast<double>(attrib.vertices[p]), static_cast<double>(attrib.vertices[p + 1]),
+                        static_cast<double>(attrib.vertices[p + 2]));
+    if (!position.allFinite()) throw InputError(file, "", "a coordinate is too large to represent");
+    mesh.vertices.push_back(position);
+  }
+  const int vertexCount = static_cast<int>(mesh.vertices.size());
+
+  int faceNumber = 0;  // 1-based, counting `f` lines through the whole file
+  for (const tinyobj::shape_t& shape : reader.GetShapes()) {
+    // tinyobjloader stores corner counts as bytes; a larger polygon would be misread.
+    size_t cornerTotal = 0;
+    for (const unsigned char cornerCount : shape.mesh.num_face_vertices) cornerTotal += cornerCount;
+    if (cornerTotal != shape.mesh.indices.size()) throw InputError(file, "", "a face has more than 255 corners");
+
+    size_t firstCorner = 0;
+    for (const unsigned char cornerCount : shape.mesh.num_face_vertices) {
+      ++faceNumber;
+      const std::string face = "face " + std::to_string(faceNumber);
+      const tinyobj::index_t* corners = &shape.mesh.indices[firstCorner];
+      firstCorner += cornerCount;
+      if (cornerCount < 3) throw InputError(file, face, "has fewer than 3 corners");
+      for (int c = 0; c < cornerCount; ++c) {
+        if (corners[c].vertex_index < 0 || corners[c].vertex_index >= vertexCount) {
+          throw InputError(file, face, "position index out of range");
+        }
+      }
+      for (int j = 1; j + 1 < cornerCount; ++j) {
+        mesh.triangles.push_back({corners[0].vertex_index, corners[j].vertex_index, corners[j + 1].vertex_index});
+      }
+    }
+  }
+  if (mesh.triangles.empty()) throw InputError(file, "", "has no faces");
+
+  const std::vector<std::string> problems = closedSurfaceProblems(mesh);
+  if (!problems.empty()) {
+    throw InputError(file, "",
+                     "not the closed surface of a solid: " + problems.front() + " (" + std::to_string(problems.size()) +
+                         " problem(s) in all; vertex ids count `v` lines from 0, triangle ids count fan "
+                         "triangles in face order)");
+  }
+  const double volume = signedVolume(mesh);
+  if (!(volume > 0.0)) {
+    std::ostringstream what;
+    what << "encloses a volume of " << volume
+         << " m^3: its faces are turned inward (clockwise seen from outside); reverse every face's vertex order";
+    throw InputError(file, "", what.str());
+  }
+  return mesh;
+}
+
+}  // namespace weft

@@ -1,0 +1,85 @@
+// Loading a tool's OBJ: vertex ids follow the file, and bad files are named with what is wrong.
+#include "rigid/closed_obj_import.h"
+
+#include <gtest/gtest.h>
+
+#include "rigid/mass_properties.h"
+#include "rigid_test_support.h"
+#include "util/input_error.h"
+
+namespace weft {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A unit cube with its vertices in a deliberately scrambled order and quad faces (fanned on load).
+const char* const kCube =
+    "# cube\n"
+    "v 1 1 1\nv 0 0 0\nv 1 0 0\nv 0 1 1\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\n"
+    "f 2 6 5 3\n"   // z = 0, facing -z
+    "f 7 8 1 4\n"   // z = 1
+    "f 2 3 8 7\n"   // y = 0
+    "f 6 4 1 5\n"   // y = 1
+    "f 2 7 4 6\n"   // x = 0
+    "f 3 5 1 8\n";  // x = 1
+
+void expectRejected(const fs::path& path, const std::string& field, const std::string& phrase) {
+  try {
+    loadClosedObj(path);
+    ADD_FAILURE() << "expected an InputError for " << path;
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.file(), path.string());
+    EXPECT_EQ(e.field(), field) << e.what();
+    EXPECT_NE(std::string(e.what()).find(phrase), std::string::npos) << e.what();
+  }
+}
+
+TEST(RigidObjImport, KeepsTheFilesVertexOrderAndFansPolygons) {
+  const TriangleMesh mesh = loadClosedObj(test::writeScratchFile("cube.obj", kCube));
+  ASSERT_EQ(mesh.vertices.size(), 8u);
+  EXPECT_EQ(mesh.vertices[0], Vec3(1, 1, 1));
+  EXPECT_EQ(mesh.vertices[1], Vec3(0, 0, 0));
+  EXPECT_EQ(mesh.vertices[7], Vec3(1, 0, 1));
+  ASSERT_EQ(mesh.triangles.size(), 12u);
+  EXPECT_EQ(mesh.triangles[0], (std::array<int, 3>{1, 5, 4}));  // f 2 6 5 3 -> (2 6 5), (2 5 3), 0-based
+  EXPECT_EQ(mesh.triangles[1], (std::array<int, 3>{1, 4, 2}));
+  EXPECT_NEAR(signedVolume(mesh), 1.0, 1e-15);
+}
+
+TEST(RigidObjImport, KeepsIdsAcrossObjectsAndGroups) {
+  std::string text = kCube;
+  text.insert(text.find("f 2 7"), "o second\ng side\n");
+  const TriangleMesh mesh = loadClosedObj(test::writeScratchFile("cube.obj", text));
+  EXPECT_EQ(mesh.vertices[0], Vec3(1, 1, 1));
+  EXPECT_EQ(mesh.triangles.size(), 12u);
+}
+
+TEST(RigidObjImport, RejectsAnInsideOutMesh) {
+  std::string text = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\nf 1 4 2\nf 1 3 4\nf 2 4 3\n";
+  expectRejected(test::writeScratchFile("inward.obj", text), "", "turned inward");
+}
+
+TEST(RigidObjImport, RejectsAnOpenMesh) {
+  std::string text = kCube;
+  text.erase(text.find("f 3 5 1 8"));
+  expectRejected(test::writeScratchFile("open.obj", text), "", "has a hole");
+}
+
+TEST(RigidObjImport, RejectsAFlippedFace) {
+  std::string text = kCube;
+  text.replace(text.find("f 3 5 1 8"), 9, "f 8 1 5 3");
+  expectRejected(test::writeScratchFile("flipped.obj", text), "", "inconsistent orientation");
+}
+
+TEST(RigidObjImport, RejectsBadFiles) {
+  expectRejected(test::scratchDir() / "missing.obj", "", "not found");
+  expectRejected(test::writeScratchFile("nan.obj", std::string("v nan 0 0\n") + kCube), "line 1", "non-finite");
+  expectRejected(test::writeScratchFile("text.obj", std::string("v 1 x 0\n") + kCube), "line 1", "'x' is not a number");
+  expectRejected(test::writeScratchFile("range.obj", std::string(kCube) + "f 1 2 9\n"), "", "out of range");
+  expectRejected(test::writeScratchFile("empty.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n"), "", "has no faces");
+  expectRejected(test::writeScratchFile("stray.obj", std::string(kCube) + "v 5 5 5\n"), "",
+                 "vertex 8 is in no triangle");
+}
+
+}  // namespace
+}  // namespace weft
