@@ -82,6 +82,26 @@ nlohmann::ordered_json runMetrics(const World& world, double wallSeconds) {
       {"last_newton_residual", stats.lastNewtonResidual},
       {"linear_solve_failures", stats.linearSolveFailures},
   };
+  if (world.contactRuns()) {
+    const ContactStats& c = world.contactStats();
+    double contactMs = 0.0;
+    for (std::size_t k = 0; k < profile.names.size(); ++k) {
+      if (profile.names[k].rfind("contact_", 0) == 0) contactMs += profile.totalMs[k];
+    }
+    j["collision"] = {
+        {"stage_ms", contactMs},
+        {"self_collision", scene.contact.self},
+        {"proximity_impulses", c.proximityImpulses},
+        {"ground_contacts", c.groundContacts},
+        {"ccd_collisions", c.ccdCollisions},
+        {"ccd_iterations", c.ccdIterations},
+        {"impact_zone_steps", c.impactZoneSteps},
+        {"impact_zone_rounds", c.impactZoneRounds},
+        {"impact_zones", c.impactZones},
+        {"unresolved_steps", c.unresolvedSteps},
+        {"sharp_contacts", c.sharpContacts},
+    };
+  }
   j["state_hash"] = hashHex(world.stateHash());
   j["threads"] = scene.solver.threads;
   j["dt"] = scene.solver.dt;

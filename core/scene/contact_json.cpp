@@ -59,10 +59,10 @@ std::vector<ObstacleKeyframe> parseKeyframes(const FieldReader& parent, const Sc
   if (keys.empty()) parent.fail(parent.pointer("keyframes"), "must contain at least one key");
   std::vector<ObstacleKeyframe> out;
   for (std::size_t k = 0; k < keys.size(); ++k) {
-    const FieldReader r(keys[k], childPointer(parent.pointer("keyframes"), k), ctx.file, {"t", "offset", "rotate_deg"});
+    const FieldReader r(keys[k], childPointer(parent.pointer("keyframes"), k), ctx.file, {"t", "translate", "rotate_deg"});
     ObstacleKeyframe key;
     key.time = r.numberValue(r.required("t", "the key's time in seconds"), r.pointer("t"), Bound::NonNegative);
-    key.offset = vec3(r, "offset", key.offset);
+    key.translate = vec3Value(r, r.required("translate", "the body origin's position [x, y, z] (m)"), r.pointer("translate"));
     key.rotateDeg = vec3(r, "rotate_deg", key.rotateDeg);
     if (!out.empty() && key.time <= out.back().time) {
       r.fail(r.pointer("t"), "keys must be in increasing time order; this key's time " + std::to_string(key.time) +
@@ -112,6 +112,13 @@ ObstacleSpec parseObstacle(const json& j, const std::string& pointer, std::size_
     obstacle.rotateDeg = vec3(p, "rotate_deg", obstacle.rotateDeg);
   }
   if (r.has("motion")) parseMotion(r.at("motion"), r.pointer("motion"), ctx, obstacle);
+  if (!obstacle.keyframes.empty() && r.has("placement")) {
+    r.fail(r.pointer("placement"), "an obstacle moved by keyframes takes its pose from them; remove \"placement\"");
+  }
+  if (!obstacle.keyframes.empty()) {
+    obstacle.translate = obstacle.keyframes.front().translate;
+    obstacle.rotateDeg = obstacle.keyframes.front().rotateDeg;
+  }
   obstacle.friction = r.number("friction", obstacle.friction, Bound::NonNegative);
   return obstacle;
 }

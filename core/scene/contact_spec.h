@@ -25,11 +25,10 @@ struct ShapeSpec {
   double scale = 1.0;                   // mesh: metres per OBJ unit
 };
 
-// A kinematic key: the obstacle's pose relative to its placement (offset added to the placed
-// position, extra rotation about the body origin applied after the placement's rotation).
+// A kinematic key: the pose of the body origin at a time (a scene with keys gives no placement).
 struct ObstacleKeyframe {
   double time = 0.0;             // s
-  Vec3 offset = Vec3::Zero();    // m
+  Vec3 translate = Vec3::Zero(); // world position of the body origin (m)
   Vec3 rotateDeg = Vec3::Zero(); // about world x, then y, then z (degrees)
 };
 

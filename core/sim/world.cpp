@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "contact/obstacle.h"
 #include "forces/elastic_forces.h"
 #include "forces/wind.h"
 #include "integrate/integrator.h"
@@ -14,6 +15,9 @@ struct World::Impl {
   Scene scene;
   std::vector<Cloth> cloths;
   std::vector<std::unique_ptr<Integrator>> integrators;
+  std::vector<Obstacle> obstacles;
+  std::unique_ptr<ContactStage> contact;
+  std::vector<std::vector<Vec3>> startPositions;  // each cloth's positions at the start of the step (contact)
   double time = 0.0;
   long long steps = 0;
   StageProfile profile;
@@ -22,6 +26,19 @@ struct World::Impl {
   bool windRuns() const { return scene.stages.wind && windEnabled(scene.forces.wind); }
   bool gravityRuns() const { return scene.stages.gravity && scene.forces.gravity.squaredNorm() > 0.0; }
   bool bendingRuns(const Cloth& cloth) const { return scene.stages.bending && !cloth.hinges.empty(); }
+  void beginObstacles(const StepInputs& inputs) {
+    if (obstacles.empty()) return;
+    StageTimer timer(profile, "obstacles");
+    for (Obstacle& o : obstacles) beginObstacleStep(o, inputs.time, inputs.dt, inputs.gravity);
+  }
+  void endObstacles() {
+    if (obstacles.empty()) return;
+    StageTimer timer(profile, "obstacles");
+    for (Obstacle& o : obstacles) endObstacleStep(o);
+  }
+  void saveStartPositions() {
+    for (size_t c = 0; c < cloths.size(); ++c) startPositions[c] = cloths[c].mesh.x;
+  }
   bool pinsRun() const {
     for (const Cloth& cloth : cloths)
       if (!cloth.pins.empty()) return true;
@@ -35,6 +52,11 @@ World::World(const Scene& scene) : impl_(std::make_unique<Impl>()) {
     impl_->cloths.push_back(buildCloth(scene.cloths[i], scene.file.string(), static_cast<int>(i)));
     impl_->integrators.push_back(makeIntegrator(scene.solver));
   }
+  for (size_t i = 0; i < scene.obstacles.size(); ++i) {
+    impl_->obstacles.push_back(buildObstacle(scene.obstacles[i], scene.file.string(), static_cast<int>(i)));
+  }
+  impl_->contact = std::make_unique<ContactStage>(scene);
+  impl_->startPositions.resize(impl_->cloths.size());
 }
 
 World::~World() = default;
@@ -51,10 +73,14 @@ void World::step() {
     inputs.wind = w.windRuns() ? &w.scene.forces.wind : nullptr;
     inputs.damping = w.scene.forces.damping;
     inputs.threads = std::max(1, w.scene.solver.threads);
+    w.beginObstacles(inputs);
+    if (w.contact->runs()) w.saveStartPositions();
     for (size_t c = 0; c < w.cloths.size(); ++c) {
       inputs.bending = w.bendingRuns(w.cloths[c]);
       w.integrators[c]->advance(w.cloths[c], inputs, w.profile, w.stats);
     }
+    w.contact->resolve(w.cloths, w.startPositions, w.obstacles, h, w.profile);
+    w.endObstacles();
   }
   ++w.steps;
   w.time = w.steps * w.scene.solver.dt;  // no drift from summing dt
@@ -65,6 +91,18 @@ long long World::stepCount() const { return impl_->steps; }
 const Scene& World::scene() const { return impl_->scene; }
 int World::clothCount() const { return static_cast<int>(impl_->cloths.size()); }
 const ClothMesh& World::cloth(int i) const { return impl_->cloths.at(i).mesh; }
+int World::obstacleCount() const { return static_cast<int>(impl_->obstacles.size()); }
+const Obstacle& World::obstacle(int i) const { return impl_->obstacles.at(i); }
+std::vector<Vec3> World::obstacleVertices(int i) const {
+  const Obstacle& o = impl_->obstacles.at(i);
+  std::vector<Vec3> world;
+  world.reserve(o.bodyVertices.size());
+  for (const Vec3& p : o.bodyVertices) world.push_back(o.body.state.position + o.body.state.orientation * p);
+  return world;
+}
+bool World::contactRuns() const { return impl_->contact->runs(); }
+const ContactStats& World::contactStats() const { return impl_->contact->stats(); }
+const std::vector<SharpContactRecord>& World::sharpContacts() const { return impl_->contact->sharpRecords(); }
 const StageProfile& World::profile() const { return impl_->profile; }
 const SolverStats& World::solverStats() const { return impl_->stats; }
 
@@ -83,6 +121,12 @@ std::vector<std::string> World::stagesRun() const {
     stages.push_back("linear_solve");
   }
   stages.push_back("update");
+  if (!w.obstacles.empty()) stages.push_back("obstacles");
+  if (w.contact->runs()) {
+    stages.push_back("contact_proximity");
+    stages.push_back("contact_ccd");
+    stages.push_back("contact_impact_zones");  // only when pass 2 leaves collisions
+  }
   return stages;
 }
 
@@ -105,21 +149,34 @@ WorldMetrics World::metrics() const {
     m.elasticEnergy += elastic.membraneEnergy + elastic.bendingEnergy;
     m.maxStrain = std::max(m.maxStrain, elastic.maxPrincipalStrain);
   }
+  for (const Obstacle& o : w.obstacles) {
+    if (o.motion != ObstacleMotion::Dynamic) continue;
+    m.kineticEnergy += o.body.kineticEnergy();
+    m.gravityEnergy -= o.body.mass * w.scene.forces.gravity.dot(o.body.state.position);
+    if (!o.body.state.position.allFinite() || !o.body.state.linearVelocity.allFinite()) m.finite = false;
+  }
   return m;
 }
 
 std::uint64_t World::stateHash() const {
-  // FNV-1a, 64 bit, over the raw bytes of every position in cloth and vertex id order.
+  // FNV-1a, 64 bit, over the raw bytes of every cloth position in cloth and vertex id order, then
+  // of each dynamic obstacle's position and orientation (scenes without one hash as before).
   std::uint64_t hash = 14695981039346656037ull;
-  for (const Cloth& cloth : impl_->cloths) {
-    for (const Vec3& x : cloth.mesh.x) {
-      unsigned char bytes[sizeof(double) * 3];
-      std::memcpy(bytes, x.data(), sizeof(bytes));
-      for (unsigned char b : bytes) {
-        hash ^= b;
-        hash *= 1099511628211ull;
-      }
+  auto mix = [&hash](const double* values, int count) {
+    unsigned char bytes[sizeof(double) * 4];
+    std::memcpy(bytes, values, sizeof(double) * count);
+    for (int k = 0; k < static_cast<int>(sizeof(double)) * count; ++k) {
+      hash ^= bytes[k];
+      hash *= 1099511628211ull;
     }
+  };
+  for (const Cloth& cloth : impl_->cloths) {
+    for (const Vec3& x : cloth.mesh.x) mix(x.data(), 3);
+  }
+  for (const Obstacle& o : impl_->obstacles) {
+    if (o.motion != ObstacleMotion::Dynamic) continue;
+    mix(o.body.state.position.data(), 3);
+    mix(o.body.state.orientation.coeffs().data(), 4);
   }
   return hash;
 }

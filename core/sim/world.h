@@ -6,12 +6,15 @@
 #include <string>
 #include <vector>
 
+#include "contact/contact_passes.h"
+#include "contact/contact_stage.h"
 #include "mesh/cloth_mesh.h"
 #include "scene/scene.h"
 #include "sim/stage_profile.h"
 
 namespace weft {
 
+struct Obstacle;
 
 struct SolverStats {
   long long linearIterations = 0;   // total linear-solver iterations (CG) since the start
@@ -24,9 +27,9 @@ struct SolverStats {
 
 struct WorldMetrics {
   double maxStrain = 0.0;        // largest principal Green strain over all triangles
-  double kineticEnergy = 0.0;    // J
+  double kineticEnergy = 0.0;    // J (cloths and dynamic obstacles)
   double elasticEnergy = 0.0;    // membrane + bending (J)
-  double gravityEnergy = 0.0;    // J, relative to y = 0
+  double gravityEnergy = 0.0;    // J, relative to y = 0 (cloths and dynamic obstacles)
   bool finite = true;            // every position and velocity is finite
 };
 
@@ -44,6 +47,13 @@ class World {
   const Scene& scene() const;
   int clothCount() const;
   const ClothMesh& cloth(int i) const;
+  int obstacleCount() const;
+  const Obstacle& obstacle(int i) const;
+  // The obstacle's mesh in the world at the current time.
+  std::vector<Vec3> obstacleVertices(int i) const;
+  bool contactRuns() const;  // the scene has a collision stage
+  const ContactStats& contactStats() const;
+  const std::vector<SharpContactRecord>& sharpContacts() const;  // of the latest step
   const StageProfile& profile() const;
   const SolverStats& solverStats() const;
   std::vector<std::string> stagesRun() const;  // names of the stages this scene runs

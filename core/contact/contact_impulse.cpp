@@ -1,0 +1,42 @@
+#include "contact/contact_impulse.h"
+
+#include <algorithm>
+
+namespace weft {
+
+ImpulseResult applyContactImpulse(std::vector<ContactBody>& bodies, const ContactSide& a, const ContactSide& b,
+                                  const Vec3& n, double targetNormalVelocity, double mu, double h) {
+  ImpulseResult result;
+  const Vec3 relative = sideVelocity(bodies, a, h) - sideVelocity(bodies, b, h);
+  const double normalVelocity = n.dot(relative);
+  result.normalVelocityBefore = normalVelocity;
+  if (!(normalVelocity < targetNormalVelocity)) return result;
+  const double inverseMass = sideInverseMass(bodies, a, n) + sideInverseMass(bodies, b, n);
+  result.inverseMass = inverseMass;
+  if (!(inverseMass > 0.0)) return result;
+
+  // Normal: the impulse that changes the relative normal velocity by exactly the shortfall.
+  const double normalChange = targetNormalVelocity - normalVelocity;
+  const Vec3 normalImpulse = (normalChange / inverseMass) * n;
+  applySideImpulse(bodies, a, normalImpulse, h);
+  applySideImpulse(bodies, b, -normalImpulse, h);
+  result.applied = true;
+
+  // Friction (Bridson 2002, §7.2): v_T <- max(1 - mu dv_N / |v_T|, 0) v_T, so sliding slows by at
+  // most mu times the normal velocity change and never reverses.
+  const Vec3 tangential = relative - normalVelocity * n;
+  const double speed = tangential.norm();
+  if (mu > 0.0 && speed > 0.0) {
+    const Vec3 direction = tangential / speed;
+    const double tangentInverseMass = sideInverseMass(bodies, a, direction) + sideInverseMass(bodies, b, direction);
+    if (tangentInverseMass > 0.0) {
+      const double slowDown = std::min(mu * normalChange, speed);
+      const Vec3 frictionImpulse = (-slowDown / tangentInverseMass) * direction;
+      applySideImpulse(bodies, a, frictionImpulse, h);
+      applySideImpulse(bodies, b, -frictionImpulse, h);
+    }
+  }
+  return result;
+}
+
+}  // namespace weft

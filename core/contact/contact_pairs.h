@@ -1,0 +1,41 @@
+#pragma once
+// The broad phase of every pass: which bodies are tested against which, and the primitive pairs
+// (vertex-face, edge-edge) whose swept boxes overlap, in one deterministic list.
+#include <utility>
+#include <vector>
+
+#include "contact/contact_body.h"
+
+namespace weft {
+
+enum class PairKind { VertexFace, EdgeEdge };
+
+// VertexFace: vertex featureA of body A against triangle featureB of body B.
+// EdgeEdge: edge featureA of body A against edge featureB of body B (CollisionMesh edge ids).
+struct PrimitivePair {
+  PairKind kind = PairKind::VertexFace;
+  int bodyA = 0, featureA = 0;
+  int bodyB = 0, featureB = 0;
+};
+
+// Body pairs to test: (a, b) with a != b, and bodies tested against themselves.
+struct ContactPairing {
+  std::vector<std::pair<int, int>> between;
+  std::vector<int> self;
+  bool empty() const { return between.empty() && self.empty(); }
+};
+
+// Refreshes every involved body's swept boxes (grown by margin), then lists the candidate pairs.
+void findPrimitivePairs(std::vector<ContactBody>& bodies, const ContactPairing& pairing, double margin,
+                        CandidatePairs& scratch, std::vector<PrimitivePair>& out);
+
+// The Coulomb coefficient of a pair: the obstacle's against cloth, or cloth on cloth.
+double pairFriction(const std::vector<ContactBody>& bodies, const PrimitivePair& pair);
+
+// The two sides of a vertex-face pair given the face weights, or of an edge-edge pair given the
+// parameters along each edge.
+ContactSide vertexSide(int body, int vertex);
+ContactSide faceSide(const std::vector<ContactBody>& bodies, int body, int face, const double weights[3]);
+ContactSide edgeSide(const std::vector<ContactBody>& bodies, int body, int edge, double parameter);
+
+}  // namespace weft

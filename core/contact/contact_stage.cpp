@@ -1,0 +1,125 @@
+#include "contact/contact_stage.h"
+
+#include "contact/obstacle.h"
+#include "sim/cloth.h"
+
+namespace weft {
+namespace {
+
+CollisionMesh clothCollisionMesh(const ClothMesh& mesh) {
+  std::vector<std::array<int, 3>> triangles;
+  triangles.reserve(mesh.tris.size());
+  for (const Triangle& t : mesh.tris) triangles.push_back(t.v);
+  return makeCollisionMesh(mesh.vertexCount(), triangles);
+}
+
+}  // namespace
+
+ContactStage::ContactStage(const Scene& scene) : spec_(scene.contact), ground_(scene.ground) {
+  const int clothCount = static_cast<int>(scene.cloths.size());
+  const int obstacleCount = static_cast<int>(scene.obstacles.size());
+  if (scene.stages.collision) {
+    for (int c = 0; c < clothCount; ++c) {
+      if (spec_.obstacles) {
+        for (int o = 0; o < obstacleCount; ++o) pairing_.between.emplace_back(c, clothCount + o);
+      }
+      if (spec_.self) {
+        pairing_.self.push_back(c);
+        for (int other = c + 1; other < clothCount; ++other) pairing_.between.emplace_back(c, other);
+      }
+    }
+  }
+  const bool groundRuns = scene.stages.collision && spec_.obstacles && ground_.enabled;
+  if (!groundRuns) ground_.enabled = false;
+  runs_ = !pairing_.empty() || groundRuns;
+  selfCollision_ = !pairing_.self.empty();
+  bodies_.resize(static_cast<std::size_t>(clothCount + obstacleCount));
+  clothTopology_.resize(static_cast<std::size_t>(clothCount));
+  clothInverseMass_.resize(static_cast<std::size_t>(clothCount));
+  for (int c = 0; c < clothCount; ++c) bodyToWorldIndex_.push_back(c);
+  for (int o = 0; o < obstacleCount; ++o) bodyToWorldIndex_.push_back(o);
+}
+
+void ContactStage::refreshBodies(std::vector<Cloth>& cloths, const std::vector<std::vector<Vec3>>& startPositions,
+                                 std::vector<Obstacle>& obstacles) {
+  for (std::size_t c = 0; c < cloths.size(); ++c) {
+    ClothMesh& mesh = cloths[c].mesh;
+    CollisionMesh& topology = clothTopology_[c];
+    // A tear or a cut adds vertices and triangles: the collision topology follows.
+    if (topology.vertexCount != mesh.vertexCount() ||
+        topology.triangles.size() != static_cast<std::size_t>(mesh.triangleCount())) {
+      topology = clothCollisionMesh(mesh);
+    }
+    std::vector<double>& inverseMass = clothInverseMass_[c];
+    inverseMass.resize(static_cast<std::size_t>(mesh.vertexCount()));
+    for (int i = 0; i < mesh.vertexCount(); ++i) {
+      inverseMass[i] = mesh.pinned[i] || !(mesh.mass[i] > 0.0) ? 0.0 : 1.0 / mesh.mass[i];
+    }
+    ContactBody& body = bodies_[c];
+    body.topology = &topology;
+    body.x0 = &startPositions[c];
+    body.x1 = &mesh.x;
+    body.v = &mesh.v;
+    body.inverseMass = &inverseMass;
+    body.obstacle = nullptr;
+    body.friction = spec_.selfFriction;
+    body.swept.mesh = &topology;
+    body.swept.x0 = body.x0;
+    body.swept.x1 = body.x1;
+  }
+  for (std::size_t o = 0; o < obstacles.size(); ++o) {
+    Obstacle& obstacle = obstacles[o];
+    ContactBody& body = bodies_[cloths.size() + o];
+    body.topology = &obstacle.topology;
+    body.x0 = &obstacle.x0;
+    body.x1 = &obstacle.x1;
+    body.v = nullptr;
+    body.inverseMass = nullptr;
+    body.obstacle = &obstacle;
+    body.friction = obstacle.friction;
+    body.swept.mesh = &obstacle.topology;
+    body.swept.x0 = body.x0;
+    body.swept.x1 = body.x1;
+  }
+}
+
+void ContactStage::resolve(std::vector<Cloth>& cloths, const std::vector<std::vector<Vec3>>& startPositions,
+                           std::vector<Obstacle>& obstacles, double h, StageProfile& profile) {
+  records_.clear();
+  if (!runs_) return;
+  refreshBodies(cloths, startPositions, obstacles);
+  ContactStepSettings settings;
+  settings.h = h;
+  settings.thickness = spec_.thickness;
+  settings.ground = ground_.enabled ? &ground_ : nullptr;
+  settings.ccdIterations = spec_.ccdIterations;
+  settings.impactZoneIterations = spec_.impactZoneIterations;
+
+  PassCounts counts;
+  {
+    StageTimer timer(profile, "contact_proximity");
+    findPrimitivePairs(bodies_, pairing_, spec_.thickness, scratch_, pairs_);
+    runProximityPass(bodies_, pairs_, settings, counts);
+  }
+  bool resolved = false;
+  {
+    StageTimer timer(profile, "contact_ccd");
+    resolved = runCollisionPass(bodies_, pairing_, settings, bodyToWorldIndex_, scratch_, pairs_, counts, records_);
+  }
+  if (!resolved) {
+    StageTimer timer(profile, "contact_impact_zones");
+    ++stats_.impactZoneSteps;
+    runImpactZonePass(bodies_, pairing_, settings, scratch_, pairs_, counts);
+  }
+  ++stats_.steps;
+  stats_.proximityImpulses += counts.proximityImpulses;
+  stats_.groundContacts += counts.groundContacts;
+  stats_.ccdCollisions += counts.ccdCollisions;
+  stats_.ccdIterations += counts.ccdIterations;
+  stats_.impactZoneRounds += counts.impactZoneRounds;
+  stats_.impactZones += counts.impactZones;
+  stats_.unresolvedSteps += counts.unresolved ? 1 : 0;
+  stats_.sharpContacts += static_cast<long long>(records_.size());
+}
+
+}  // namespace weft

@@ -1,0 +1,74 @@
+#pragma once
+// The collision stage of the step: builds what the three passes (contact_passes.h) see of the
+// cloths and obstacles, runs them, and keeps the statistics and the sharp-contact records.
+//
+// It runs after the integrator has produced each cloth's candidate end-of-step state and before
+// the obstacles commit their poses. A scene with no obstacle, no ground and no self-collision has
+// no collision stage at all (runs() is false).
+#include <vector>
+
+#include "collision/candidate_pairs.h"
+#include "collision/collision_mesh.h"
+#include "contact/contact_body.h"
+#include "contact/contact_pairs.h"
+#include "contact/contact_passes.h"
+#include "scene/scene.h"
+#include "sim/stage_profile.h"
+
+namespace weft {
+
+struct Cloth;
+struct Obstacle;
+
+// Totals since the start of the run.
+struct ContactStats {
+  long long steps = 0;               // steps the stage ran
+  long long proximityImpulses = 0;   // pass 1
+  long long groundContacts = 0;      // cloth vertices kept above the ground (passes 1-3)
+  long long ccdCollisions = 0;       // pass 2 impulses
+  long long ccdIterations = 0;       // pass 2 iterations
+  long long impactZoneSteps = 0;     // steps that needed pass 3
+  long long impactZoneRounds = 0;    // pass 3 rounds
+  long long impactZones = 0;         // zones moved rigidly (summed over steps)
+  long long unresolvedSteps = 0;     // steps where pass 3 hit its bound with collisions left
+  long long sharpContacts = 0;       // sharp-tool records made
+};
+
+class ContactStage {
+ public:
+  explicit ContactStage(const Scene& scene);
+
+  bool runs() const { return runs_; }
+  bool selfCollision() const { return selfCollision_; }
+
+  // Resolves contact over one (sub)step of length h. startPositions[c] holds cloth c's positions
+  // at the start of the step; each cloth's mesh holds the candidate end state (x, v), which is
+  // changed in place. Obstacles must have begun the step (beginObstacleStep).
+  void resolve(std::vector<Cloth>& cloths, const std::vector<std::vector<Vec3>>& startPositions,
+               std::vector<Obstacle>& obstacles, double h, StageProfile& profile);
+
+  const ContactStats& stats() const { return stats_; }
+  // Sharp-tool contacts of the latest step (cutting reads these).
+  const std::vector<SharpContactRecord>& sharpRecords() const { return records_; }
+
+ private:
+  void refreshBodies(std::vector<Cloth>& cloths, const std::vector<std::vector<Vec3>>& startPositions,
+                     std::vector<Obstacle>& obstacles);
+
+  bool runs_ = false;
+  bool selfCollision_ = false;
+  ContactSpec spec_;
+  GroundSpec ground_;
+  // One body per cloth, then one per obstacle; kept between steps for their BVHs.
+  std::vector<ContactBody> bodies_;
+  std::vector<CollisionMesh> clothTopology_;
+  std::vector<std::vector<double>> clothInverseMass_;
+  std::vector<int> bodyToWorldIndex_;
+  ContactPairing pairing_;
+  CandidatePairs scratch_;
+  std::vector<PrimitivePair> pairs_;
+  ContactStats stats_;
+  std::vector<SharpContactRecord> records_;
+};
+
+}  // namespace weft

@@ -1,0 +1,176 @@
+// Contact as a user sees it: preset scenes run step by step, with exact checks after every step
+// that no cloth triangle crosses an obstacle triangle, no vertex is below the ground and the cloth
+// does not pass through itself.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "contact/obstacle.h"
+#include "scene/scene_json.h"
+#include "sim/world.h"
+#include "support/contact_checks.h"
+
+namespace weft {
+namespace {
+
+std::string scenePath(const std::string& name) { return std::string(WEFT_SOURCE_DIR) + "/presets/scenes/" + name + ".json"; }
+
+std::vector<std::array<int, 3>> obstacleTriangles(const World& world, int i) { return world.obstacle(i).topology.triangles; }
+
+// Steps the world, checking after every step that cloth 0 crosses no obstacle and stays above the
+// ground (when there is one). Returns the number of steps with a violation.
+int stepsWithPenetration(World& world, int steps, bool checkSelf = false) {
+  int bad = 0;
+  const auto clothTriangles = test::clothTriangles(world.cloth(0));
+  for (int s = 0; s < steps; ++s) {
+    world.step();
+    const ClothMesh& cloth = world.cloth(0);
+    int violations = 0;
+    for (int o = 0; o < world.obstacleCount(); ++o) {
+      violations += test::countIntersections(cloth.x, clothTriangles, world.obstacleVertices(o), obstacleTriangles(world, o));
+    }
+    if (world.scene().ground.enabled) violations += test::countBelow(cloth.x, world.scene().ground.height);
+    if (checkSelf) violations += test::countSelfIntersections(cloth);
+    if (violations > 0) {
+      ++bad;
+      ADD_FAILURE() << "step " << s + 1 << ": " << violations << " penetrations";
+      if (bad > 3) break;
+    }
+  }
+  return bad;
+}
+
+TEST(ContactScenes, SheetDroppedOnSphereNeverPassesThrough) {
+  const Scene scene = loadScene(scenePath("sheet-on-sphere"), {"cloths.0.mesh.grid.resolution=[24,24]"});
+  World world(scene);
+  EXPECT_EQ(stepsWithPenetration(world, 240), 0);
+  EXPECT_TRUE(world.metrics().finite);
+  // It rests on the ball: the top of the sheet is at the ball's top plus about the thickness.
+  double top = -1.0;
+  for (const Vec3& x : world.cloth(0).x) top = std::max(top, x.y());
+  EXPECT_NEAR(top, 0.5 + scene.contact.thickness, 0.01);
+  EXPECT_GT(world.contactStats().proximityImpulses, 0);
+}
+
+TEST(ContactScenes, SheetDroppedOnBoxNeverPassesThrough) {
+  const Scene scene = loadScene(scenePath("sheet-on-box"), {"cloths.0.mesh.grid.resolution=[24,24]"});
+  World world(scene);
+  EXPECT_EQ(stepsWithPenetration(world, 240), 0);
+  EXPECT_TRUE(world.metrics().finite);
+}
+
+TEST(ContactScenes, SheetDroppedOnGroundStaysAbove) {
+  const Scene scene = loadScene(scenePath("sheet-on-sphere"), {"cloths.0.mesh.grid.resolution=[16,16]", "obstacles=[]"});
+  World world(scene);
+  EXPECT_EQ(stepsWithPenetration(world, 200), 0);
+  for (const Vec3& x : world.cloth(0).x) {
+    EXPECT_GE(x.y(), 0.0);
+    EXPECT_LT(x.y(), 0.02);  // it lies flat on the ground
+  }
+}
+
+// Odd when the segment from the ball's start to its centre crosses the sheet: the ball went through.
+int sheetCrossings(const ClothMesh& cloth, const Vec3& from, const Vec3& to) {
+  int crossings = 0;
+  for (const Triangle& t : cloth.tris) {
+    const Vec3 &a = cloth.x[t.v[0]], &b = cloth.x[t.v[1]], &c = cloth.x[t.v[2]];
+    if (trianglesIntersect(a, b, c, from, to, to)) ++crossings;
+  }
+  return crossings;
+}
+
+void expectBallDoesNotTunnel(double speed) {
+  const Scene scene = loadScene(scenePath("ball-into-sheet"),
+                                {"cloths.0.mesh.grid.resolution=[24,24]",
+                                 "obstacles.0.motion.dynamic.velocity=[0,0,-" + std::to_string(speed) + "]"});
+  World world(scene);
+  const Vec3 start = world.obstacle(0).body.state.position;
+  EXPECT_EQ(stepsWithPenetration(world, 120), 0);
+  EXPECT_EQ(sheetCrossings(world.cloth(0), start, world.obstacle(0).body.state.position) % 2, 0);
+  EXPECT_TRUE(world.metrics().finite);
+}
+
+TEST(ContactScenes, BallAt10MetresPerSecondDoesNotTunnel) { expectBallDoesNotTunnel(10.0); }
+TEST(ContactScenes, BallAt50MetresPerSecondDoesNotTunnel) { expectBallDoesNotTunnel(50.0); }
+
+TEST(ContactScenes, SheetFallingInFoldsNeverIntersectsItself) {
+  const Scene scene = loadScene(scenePath("sheet-folds-on-ground"), {"cloths.0.mesh.grid.resolution=[20,20]"});
+  World world(scene);
+  EXPECT_EQ(stepsWithPenetration(world, 240, /*checkSelf=*/true), 0);
+  EXPECT_GT(world.contactStats().proximityImpulses, 0);
+}
+
+Vec3 totalMomentum(const World& world) {
+  Vec3 p = Vec3::Zero();
+  const ClothMesh& cloth = world.cloth(0);
+  for (int i = 0; i < cloth.vertexCount(); ++i) p += cloth.mass[i] * cloth.v[i];
+  for (int o = 0; o < world.obstacleCount(); ++o) p += world.obstacle(o).body.mass * world.obstacle(o).body.state.linearVelocity;
+  return p;
+}
+
+TEST(ContactScenes, MomentumExchangedWithADynamicBallIsConserved) {
+  // A free sheet in zero gravity, no damping, hit by a ball: nothing outside the two acts on them.
+  const Scene scene = loadScene(scenePath("ball-into-sheet"),
+                                {"cloths.0.mesh.grid.resolution=[16,16]", "cloths.0.pins=[]", "forces.gravity=[0,0,0]",
+                                 "forces.damping.mass=0", "obstacles.0.motion.dynamic.velocity=[0,0,-5]",
+                                 "solver.linear_solver.tolerance=1e-10"});
+  World world(scene);
+  const Vec3 before = totalMomentum(world);
+  for (int s = 0; s < 80; ++s) world.step();
+  const Vec3 after = totalMomentum(world);
+  ASSERT_GT(world.contactStats().proximityImpulses + world.contactStats().ccdCollisions, 0) << "the ball never hit";
+  // The ball gave the sheet momentum...
+  const ClothMesh& cloth = world.cloth(0);
+  Vec3 clothMomentum = Vec3::Zero();
+  for (int i = 0; i < cloth.vertexCount(); ++i) clothMomentum += cloth.mass[i] * cloth.v[i];
+  EXPECT_LT(clothMomentum.z(), -0.1 * before.norm());
+  // ...and the total did not change (tolerance: 1e-6 of the initial momentum).
+  EXPECT_LT((after - before).norm(), 1e-6 * before.norm()) << "before " << before.transpose() << " after " << after.transpose();
+}
+
+double restingBallHeight(double mass, double& speed) {
+  const Scene scene = loadScene(scenePath("ball-on-pinned-sheet"),
+                                {"cloths.0.mesh.grid.resolution=[20,20]",
+                                 "obstacles.0.motion.dynamic.mass=" + std::to_string(mass)});
+  World world(scene);
+  for (int s = 0; s < 480; ++s) world.step();  // 4 s
+  speed = world.obstacle(0).body.state.linearVelocity.norm();
+  return world.obstacle(0).body.state.position.y();
+}
+
+TEST(ContactScenes, ABallComesToRestOnAPinnedSheetAndAHeavierOneSagsMore) {
+  double lightSpeed = 0.0, heavySpeed = 0.0;
+  const double light = restingBallHeight(0.2, lightSpeed);
+  const double heavy = restingBallHeight(2.0, heavySpeed);
+  EXPECT_LT(lightSpeed, 0.05);
+  EXPECT_LT(heavySpeed, 0.05);
+  EXPECT_GT(light, 0.6);  // held by the sheet (pinned at y = 1), not fallen through
+  EXPECT_LT(light, 1.1);
+  EXPECT_LT(heavy, light - 0.02);  // ten times heavier: a deeper sag
+  EXPECT_GT(heavy, 0.3);
+}
+
+TEST(ContactScenes, ASceneWithoutContactRunsNoCollisionStage) {
+  World plain(loadScene(scenePath("hanging-sheet")));
+  for (const std::string& stage : plain.stagesRun()) EXPECT_EQ(stage.rfind("contact_", 0), std::string::npos) << stage;
+  EXPECT_FALSE(plain.contactRuns());
+  World withBall(loadScene(scenePath("sheet-on-sphere")));
+  EXPECT_TRUE(withBall.contactRuns());
+  World switchedOff(loadScene(scenePath("sheet-on-sphere"), {"stages.collision=false"}));
+  EXPECT_FALSE(switchedOff.contactRuns());
+}
+
+TEST(ContactScenes, ContactIsDeterministicAcrossThreadCounts) {
+  std::uint64_t hashes[2];
+  for (int k = 0; k < 2; ++k) {
+    World world(loadScene(scenePath("ball-on-pinned-sheet"), {"cloths.0.mesh.grid.resolution=[16,16]",
+                                                              "solver.threads=" + std::to_string(k + 1)}));
+    for (int s = 0; s < 60; ++s) world.step();
+    hashes[k] = world.stateHash();
+  }
+  EXPECT_EQ(hashes[0], hashes[1]);
+}
+
+}  // namespace
+}  // namespace weft
