@@ -25,6 +25,8 @@
 #include "accuracy_study.h"
 #include "atomic_file.h"
 #include "command.h"
+#include "contact_bench.h"
+#include "machine_info.h"
 #include "material/elasticity.h"
 #include "metrics_writer.h"
 #include "scene/scene_json.h"
@@ -49,6 +51,8 @@ struct BenchOptions {
   std::string scene;  // default: presets/scenes/hanging-sheet.json of this source tree
   bool accuracy = false;  // run the accuracy study instead of the timing benchmark
   AccuracyOptions accuracyOptions;
+  bool contact = false;   // time the collision stage instead
+  ContactBenchOptions contactOptions;
 };
 
 struct Configuration {
@@ -179,46 +183,6 @@ Result runConfiguration(const Configuration& config, const BenchOptions& options
 }
 
 // ---------------------------------------------------------------------------------------------
-// Machine description for the CSV header.
-
-std::string cpuModel() {
-  std::ifstream cpuinfo("/proc/cpuinfo");
-  std::string line;
-  while (std::getline(cpuinfo, line)) {
-    if (line.rfind("model name", 0) == 0) {
-      const auto colon = line.find(':');
-      if (colon != std::string::npos) return line.substr(line.find_first_not_of(" \t", colon + 1));
-    }
-  }
-  return "unknown CPU";
-}
-
-std::string machineName() {
-  utsname names{};
-  return uname(&names) == 0 ? std::string(names.machine) : std::string("unknown");
-}
-
-std::string gitDescribe() {
-  const std::string command = std::string("git -C '") + WEFT_SOURCE_DIR + "' describe --always --dirty 2>/dev/null";
-  std::string out;
-  if (FILE* pipe = popen(command.c_str(), "r")) {
-    char buffer[256];
-    while (std::fgets(buffer, sizeof buffer, pipe)) out += buffer;
-    pclose(pipe);
-  }
-  while (!out.empty() && (out.back() == '\n' || out.back() == '\r')) out.pop_back();
-  return out.empty() ? "unknown" : out;
-}
-
-std::string utcDate() {
-  const std::time_t now = std::time(nullptr);
-  std::tm tm{};
-  gmtime_r(&now, &tm);
-  char text[32];
-  std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &tm);
-  return text;
-}
-
 std::string sharesText(const Result& r, const char* separator, int limit) {
   std::vector<std::pair<std::string, double>> shares = r.stageShares;
   if (limit > 0) {
@@ -358,7 +322,21 @@ Command addBenchCommand(CLI::App& app) {
       ->check(CLI::Range(3, 257))
       ->capture_default_str();
   cli->add_option("--accuracy-csv", options->accuracyOptions.csv, "Accuracy study: CSV output file")->capture_default_str();
+  cli->add_flag("--contact", options->contact,
+                "Instead of timing sizes, time the collision stage of a sheet draped on a sphere, with and without "
+                "self-collision");
+  cli->add_option("--contact-resolution", options->contactOptions.resolution, "Contact benchmark: grid vertices per side")
+      ->check(CLI::Range(4, 1024))
+      ->capture_default_str();
+  cli->add_option("--contact-csv", options->contactOptions.csv, "Contact benchmark: CSV output file")->capture_default_str();
   return {cli, [options] {
+            if (options->contact) {
+              ContactBenchOptions contact = options->contactOptions;
+              contact.steps = options->steps;
+              contact.repeats = options->repeats;
+              contact.threads = options->threads;
+              return runContactBench(contact);
+            }
             if (!options->accuracy) return runBench(*options);
             AccuracyOptions accuracy = options->accuracyOptions;
             accuracy.scene = options->scene;

@@ -39,13 +39,35 @@ std::filesystem::path frameObjPath(const std::filesystem::path& framesDir, int f
   return framesDir / (name + ".obj");
 }
 
+std::string obstacleToObj(const std::vector<Vec3>& worldVertices, const std::vector<std::array<int, 3>>& triangles,
+                          const std::string& comment) {
+  std::string out = "# " + comment + "\n";
+  char line[128];
+  for (const Vec3& p : worldVertices) {
+    std::snprintf(line, sizeof line, "v %.9g %.9g %.9g\n", p.x(), p.y(), p.z());
+    out += line;
+  }
+  for (const auto& t : triangles) {
+    std::snprintf(line, sizeof line, "f %d %d %d\n", t[0] + 1, t[1] + 1, t[2] + 1);
+    out += line;
+  }
+  return out;
+}
+
+std::filesystem::path obstacleObjPath(const std::filesystem::path& framesDir, int frame, const std::string& obstacleName) {
+  char number[32];
+  std::snprintf(number, sizeof number, "%04d", frame);
+  return framesDir / ("obstacle_" + obstacleName + "_" + number + ".obj");
+}
+
 void removeOldFrames(const std::filesystem::path& framesDir) {
   std::error_code ec;
   if (!std::filesystem::is_directory(framesDir, ec)) return;
   std::vector<std::filesystem::path> old;
   for (const auto& entry : std::filesystem::directory_iterator(framesDir, ec)) {
     const std::string name = entry.path().filename().string();
-    if (name.rfind("frame_", 0) == 0 && entry.path().extension() == ".obj") old.push_back(entry.path());
+    const bool ours = name.rfind("frame_", 0) == 0 || name.rfind("obstacle_", 0) == 0;
+    if (ours && entry.path().extension() == ".obj") old.push_back(entry.path());
   }
   for (const auto& file : old) std::filesystem::remove(file, ec);
 }

@@ -15,6 +15,7 @@
 
 #include "atomic_file.h"
 #include "command.h"
+#include "contact/obstacle.h"
 #include "frame_obj_writer.h"
 #include "metrics_writer.h"
 #include "progress_bar.h"
@@ -59,6 +60,14 @@ void writeFrames(const World& world, const fs::path& framesDir, int frame) {
     std::snprintf(comment, sizeof comment, "weft: scene %s, cloth %s, frame %d, t = %.6f s",
                   world.scene().name.c_str(), name.c_str(), frame, world.time());
     writeFileAtomically(frameObjPath(framesDir, frame, name, several), clothToObj(world.cloth(i), comment));
+  }
+  for (int i = 0; i < world.obstacleCount(); ++i) {
+    const Obstacle& obstacle = world.obstacle(i);
+    char comment[160];
+    std::snprintf(comment, sizeof comment, "weft: scene %s, obstacle %s, frame %d, t = %.6f s",
+                  world.scene().name.c_str(), obstacle.name.c_str(), frame, world.time());
+    writeFileAtomically(obstacleObjPath(framesDir, frame, obstacle.name),
+                        obstacleToObj(world.obstacleVertices(i), obstacle.topology.triangles, comment));
   }
 }
 

@@ -4,10 +4,10 @@
 // motion (an affine map of its start positions, x -> x + h (v_c + w x (x - x_c))) keeps four
 // coplanar-free points coplanar-free, so no collision can happen inside one zone.
 //
-// Infinitely heavy members decide the zone's motion: a zone touching an obstacle is carried by
-// that obstacle's motion over the step (a dynamic body is treated as kinematic here; this is the
-// fail-safe, and momentum exchange already happened in passes 1 and 2); a zone with pinned
-// vertices and no obstacle moves with their mean velocity.
+// A dynamic obstacle is a member of the zones it touches, with its mass and inertia, so a zone
+// conserves momentum. Infinitely heavy members decide the zone's motion: a zone touching a static
+// or kinematic obstacle is carried by that obstacle's motion over the step; a zone with pinned
+// vertices and no such obstacle moves with their mean velocity.
 #include <Eigen/Eigenvalues>
 
 #include <algorithm>
@@ -49,95 +49,88 @@ class ZoneSets {
   std::vector<int> parent_, obstacle_, size_;
 };
 
-struct ClothVertexIndex {
-  std::vector<int> offset;  // first global id of each body (-1: not a cloth)
-  std::vector<std::pair<int, int>> owner;  // global id -> (body, vertex)
+// The members of zones: every cloth vertex, and every dynamic obstacle as one member (it moves
+// with its zone as a whole, with its own mass and inertia). Static and kinematic obstacles are not
+// members: a zone touching one is attached to it.
+struct ZoneMembers {
+  std::vector<int> offset;                 // cloth body: first member id of its vertices; dynamic obstacle: its id; else -1
+  std::vector<std::pair<int, int>> owner;  // member id -> (body, vertex), vertex -1 for a rigid body
 };
 
-ClothVertexIndex indexClothVertices(const std::vector<ContactBody>& bodies) {
-  ClothVertexIndex index;
+bool isDynamicObstacle(const ContactBody& body) {
+  return !body.isCloth() && body.obstacle->motion == ObstacleMotion::Dynamic;
+}
+
+ZoneMembers indexMembers(const std::vector<ContactBody>& bodies) {
+  ZoneMembers index;
   index.offset.assign(bodies.size(), -1);
   for (std::size_t b = 0; b < bodies.size(); ++b) {
-    if (!bodies[b].isCloth()) continue;
-    index.offset[b] = static_cast<int>(index.owner.size());
-    for (std::size_t i = 0; i < bodies[b].x0->size(); ++i) index.owner.emplace_back(static_cast<int>(b), static_cast<int>(i));
+    if (bodies[b].isCloth()) {
+      index.offset[b] = static_cast<int>(index.owner.size());
+      for (std::size_t i = 0; i < bodies[b].x0->size(); ++i) index.owner.emplace_back(static_cast<int>(b), static_cast<int>(i));
+    } else if (isDynamicObstacle(bodies[b])) {
+      index.offset[b] = static_cast<int>(index.owner.size());
+      index.owner.emplace_back(static_cast<int>(b), -1);
+    }
   }
   return index;
 }
 
-void mergeCollision(const std::vector<ContactBody>& bodies, const ClothVertexIndex& index, const Collision& c,
-                    ZoneSets& zones) {
+void mergeCollision(const std::vector<ContactBody>& bodies, const ZoneMembers& index, const Collision& c, ZoneSets& zones) {
   int first = -1;
-  int obstacle = -1;
+  int attached = -1;
+  auto join = [&](int id) {
+    if (first < 0) first = id;
+    zones.unite(first, id);
+  };
   for (const ContactSide* side : {&c.a, &c.b}) {
-    if (!bodies[side->body].isCloth()) {
-      obstacle = side->body;
-      continue;
-    }
-    for (int k = 0; k < side->count; ++k) {
-      const int id = index.offset[side->body] + side->vertex[k];
-      if (first < 0) first = id;
-      zones.unite(first, id);
+    const ContactBody& body = bodies[side->body];
+    if (body.isCloth()) {
+      for (int k = 0; k < side->count; ++k) join(index.offset[side->body] + side->vertex[k]);
+    } else if (isDynamicObstacle(body)) {
+      join(index.offset[side->body]);
+    } else {
+      attached = side->body;
     }
   }
-  if (first >= 0 && obstacle >= 0) zones.attachObstacle(first, obstacle);
+  if (first >= 0 && attached >= 0) zones.attachObstacle(first, attached);
 }
 
-// The velocity of each member of one zone (members as global ids).
-void moveZoneRigidly(std::vector<ContactBody>& bodies, const ClothVertexIndex& index, const std::vector<int>& members,
-                     int obstacleBody, double h) {
-  auto vertex = [&](int id) -> std::pair<ContactBody&, int> {
-    const auto [b, i] = index.owner[id];
-    return {bodies[b], i};
-  };
-  auto setVelocity = [&](int id, const Vec3& velocity) {
-    auto [body, i] = vertex(id);
-    if ((*body.inverseMass)[i] == 0.0) return;  // pinned: keeps its scripted motion
-    (*body.v)[i] = velocity;
-    (*body.x1)[i] = (*body.x0)[i] + h * velocity;
-  };
-
-  if (obstacleBody >= 0) {
-    const Obstacle& obstacle = *bodies[obstacleBody].obstacle;
-    for (int id : members) {
-      auto [body, i] = vertex(id);
-      setVelocity(id, (carriedByObstacle(obstacle, (*body.x0)[i]) - (*body.x0)[i]) / h);
-    }
-    return;
-  }
-  Vec3 pinnedVelocity = Vec3::Zero();
-  int pinned = 0;
+// The rigid motion of a zone with no infinitely heavy member: the velocity of its centre of mass
+// and the spin that carries its angular momentum, from its cloth vertices (point masses) and
+// dynamic bodies (mass and inertia about their own centre).
+void moveFreeZone(std::vector<ContactBody>& bodies, const ZoneMembers& index, const std::vector<int>& members, double h) {
   double mass = 0.0;
   Vec3 centre = Vec3::Zero(), momentum = Vec3::Zero();
   for (int id : members) {
-    auto [body, i] = vertex(id);
-    const double inverseMass = (*body.inverseMass)[i];
-    if (inverseMass == 0.0) {
-      pinnedVelocity += (*body.v)[i];
-      ++pinned;
-      continue;
-    }
-    const double m = 1.0 / inverseMass;
+    const auto [b, i] = index.owner[id];
+    const ContactBody& body = bodies[b];
+    const double m = i < 0 ? body.obstacle->body.mass : 1.0 / (*body.inverseMass)[i];
+    const Vec3 x = i < 0 ? body.obstacle->start.position : (*body.x0)[i];
+    const Vec3 v = i < 0 ? body.obstacle->body.state.linearVelocity : (*body.v)[i];
     mass += m;
-    centre += m * (*body.x0)[i];
-    momentum += m * (*body.v)[i];
+    centre += m * x;
+    momentum += m * v;
   }
-  if (pinned > 0) {
-    for (int id : members) setVelocity(id, pinnedVelocity / pinned);
-    return;
-  }
-  if (!(mass > 0.0)) return;
   centre /= mass;
   const Vec3 velocity = momentum / mass;
-  // Angular momentum and inertia about the centre of mass.
   Vec3 angularMomentum = Vec3::Zero();
   Mat3 inertia = Mat3::Zero();
   for (int id : members) {
-    auto [body, i] = vertex(id);
-    const double m = 1.0 / (*body.inverseMass)[i];
-    const Vec3 r = (*body.x0)[i] - centre;
-    angularMomentum += m * r.cross((*body.v)[i] - velocity);
+    const auto [b, i] = index.owner[id];
+    const ContactBody& body = bodies[b];
+    const double m = i < 0 ? body.obstacle->body.mass : 1.0 / (*body.inverseMass)[i];
+    const Vec3 r = (i < 0 ? body.obstacle->start.position : (*body.x0)[i]) - centre;
+    const Vec3 v = i < 0 ? body.obstacle->body.state.linearVelocity : (*body.v)[i];
+    angularMomentum += m * r.cross(v - velocity);
     inertia += m * (r.squaredNorm() * Mat3::Identity() - r * r.transpose());
+    if (i < 0) {  // the body's own spin and inertia about its centre
+      const RigidBody& rigid = body.obstacle->body;
+      const Mat3 rotation = rigid.state.orientation.toRotationMatrix();
+      const Mat3 ownInertia = rotation * rigid.inertiaBody * rotation.transpose();
+      angularMomentum += ownInertia * rigid.state.angularVelocity;
+      inertia += ownInertia;
+    }
   }
   // Pseudo-inverse: a zone on a line has no inertia about that line, and no spin about it.
   const Eigen::SelfAdjointEigenSolver<Mat3> eigen(inertia);
@@ -151,9 +144,55 @@ void moveZoneRigidly(std::vector<ContactBody>& bodies, const ClothVertexIndex& i
     }
   }
   for (int id : members) {
-    auto [body, i] = vertex(id);
-    setVelocity(id, velocity + spin.cross((*body.x0)[i] - centre));
+    const auto [b, i] = index.owner[id];
+    ContactBody& body = bodies[b];
+    if (i < 0) {
+      setObstacleVelocity(*body.obstacle, velocity + spin.cross(body.obstacle->start.position - centre), spin, h);
+    } else {
+      (*body.v)[i] = velocity + spin.cross((*body.x0)[i] - centre);
+      (*body.x1)[i] = (*body.x0)[i] + h * (*body.v)[i];
+    }
   }
+}
+
+// A zone with infinitely heavy members: carried by the obstacle it touches, or else moving with the
+// mean velocity of its pinned vertices (which keep their scripted motion).
+void moveHeldZone(std::vector<ContactBody>& bodies, const ZoneMembers& index, const std::vector<int>& members,
+                  int obstacleBody, double h) {
+  Vec3 pinnedVelocity = Vec3::Zero();
+  int pinned = 0;
+  for (int id : members) {
+    const auto [b, i] = index.owner[id];
+    if (i >= 0 && (*bodies[b].inverseMass)[i] == 0.0) {
+      pinnedVelocity += (*bodies[b].v)[i];
+      ++pinned;
+    }
+  }
+  if (pinned > 0) pinnedVelocity /= pinned;
+  const Obstacle* holder = obstacleBody >= 0 ? bodies[obstacleBody].obstacle : nullptr;
+  const PoseChange holderMotion = holder ? PoseChange{holder->start, holder->end, h} : PoseChange{};
+  for (int id : members) {
+    const auto [b, i] = index.owner[id];
+    ContactBody& body = bodies[b];
+    if (i < 0) {  // a dynamic body held by the zone: it takes the holder's motion (fail-safe)
+      const Vec3 centre = body.obstacle->start.position;
+      const Vec3 v = holder ? holderMotion.pointVelocity(centre) : pinnedVelocity;
+      setObstacleVelocity(*body.obstacle, v, holder ? holderMotion.angularVelocity() : Vec3::Zero(), h);
+      continue;
+    }
+    if ((*body.inverseMass)[i] == 0.0) continue;  // pinned: keeps its scripted motion
+    const Vec3& x0 = (*body.x0)[i];
+    (*body.v)[i] = holder ? (carriedByObstacle(*holder, x0) - x0) / h : pinnedVelocity;
+    (*body.x1)[i] = x0 + h * (*body.v)[i];
+  }
+}
+
+bool hasPinnedMember(const std::vector<ContactBody>& bodies, const ZoneMembers& index, const std::vector<int>& members) {
+  for (int id : members) {
+    const auto [b, i] = index.owner[id];
+    if (i >= 0 && (*bodies[b].inverseMass)[i] == 0.0) return true;
+  }
+  return false;
 }
 
 }  // namespace
@@ -161,7 +200,7 @@ void moveZoneRigidly(std::vector<ContactBody>& bodies, const ClothVertexIndex& i
 void runImpactZonePass(std::vector<ContactBody>& bodies, const ContactPairing& pairing,
                        const ContactStepSettings& settings, CandidatePairs& scratch,
                        std::vector<PrimitivePair>& pairs, PassCounts& counts) {
-  const ClothVertexIndex index = indexClothVertices(bodies);
+  const ZoneMembers index = indexMembers(bodies);
   ZoneSets zones(static_cast<int>(index.owner.size()));
   long long zoneCount = 0;  // zones moving rigidly after the latest round
   for (int round = 0; round < settings.impactZoneIterations; ++round) {
@@ -189,7 +228,12 @@ void runImpactZonePass(std::vector<ContactBody>& bodies, const ContactPairing& p
     for (int root = 0; root < static_cast<int>(members.size()); ++root) {
       if (members[root].empty()) continue;
       ++zoneCount;
-      moveZoneRigidly(bodies, index, members[root], zones.obstacle(root), settings.h);
+      const int holder = zones.obstacle(root);
+      if (holder >= 0 || hasPinnedMember(bodies, index, members[root])) {
+        moveHeldZone(bodies, index, members[root], holder, settings.h);
+      } else {
+        moveFreeZone(bodies, index, members[root], settings.h);
+      }
     }
   }
   counts.impactZones += zoneCount;

@@ -179,6 +179,14 @@ void applyObstacleImpulse(Obstacle& obstacle, const Vec3& impulse, const Vec3& p
   placeVertices(obstacle, obstacle.end, obstacle.x1);
 }
 
+void setObstacleVelocity(Obstacle& obstacle, const Vec3& linearVelocity, const Vec3& angularVelocity, double h) {
+  if (obstacle.motion != ObstacleMotion::Dynamic) return;
+  obstacle.body.state.linearVelocity = linearVelocity;
+  obstacle.body.state.angularVelocity = angularVelocity;
+  obstacle.end = predictedEnd(obstacle.body, h);
+  placeVertices(obstacle, obstacle.end, obstacle.x1);
+}
+
 Vec3 carriedByObstacle(const Obstacle& obstacle, const Vec3& pointAtStart) {
   return obstacle.end.toWorld(obstacle.start.toBody(pointAtStart));
 }

@@ -49,6 +49,9 @@ double obstacleInverseMass(const Obstacle& obstacle, const Vec3& point, const Ve
 // Applies an impulse at a world point (start of the step) to a dynamic body and moves its candidate
 // end pose and x1 accordingly; no effect on static and kinematic obstacles.
 void applyObstacleImpulse(Obstacle& obstacle, const Vec3& impulse, const Vec3& point, double h);
+// Sets a dynamic body's velocities (impact zones move it with its zone) and its candidate end pose
+// and x1 accordingly; no effect on static and kinematic obstacles.
+void setObstacleVelocity(Obstacle& obstacle, const Vec3& linearVelocity, const Vec3& angularVelocity, double h);
 // Where the body's motion over the step carries a point that is at `pointAtStart` at the start.
 Vec3 carriedByObstacle(const Obstacle& obstacle, const Vec3& pointAtStart);
 

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <Eigen/Geometry>
+
 #include "collision/closest_points.h"
 #include "contact/contact_impulse.h"
 #include "contact/contact_passes.h"

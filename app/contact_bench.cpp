@@ -1,0 +1,140 @@
+// The collision stage's time per step, measured on the sheet-on-sphere preset at a chosen
+// resolution once the sheet lies on the ball: every timed step is one sample, and the median over
+// all repeats is reported with the pass counts, so a slow step can be traced to its pass.
+#include "contact_bench.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+#include <thread>
+#include <vector>
+
+#include "atomic_file.h"
+#include "command.h"
+#include "machine_info.h"
+#include "scene/scene_json.h"
+#include "sim/world.h"
+#include "util/input_error.h"
+
+namespace weft::app {
+namespace {
+
+namespace fs = std::filesystem;
+
+double contactMs(const StageProfile& profile) {
+  double ms = 0.0;
+  for (std::size_t k = 0; k < profile.names.size(); ++k) {
+    if (profile.names[k].rfind("contact_", 0) == 0) ms += profile.totalMs[k];
+  }
+  return ms;
+}
+
+double median(std::vector<double> values) {
+  if (values.empty()) return 0.0;
+  std::sort(values.begin(), values.end());
+  const std::size_t n = values.size();
+  return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+struct ContactBenchRow {
+  bool self = false;
+  int vertices = 0;
+  double medianContactMs = 0.0;
+  double maxContactMs = 0.0;
+  double medianStepMs = 0.0;
+  double proximityImpulsesPerStep = 0.0;
+  double ccdIterationsPerStep = 0.0;
+  double ccdCollisionsPerStep = 0.0;
+  double impactZoneStepShare = 0.0;
+  bool clean = true;  // no step left collisions unresolved
+};
+
+ContactBenchRow measure(const ContactBenchOptions& options, bool self) {
+  const fs::path scene = fs::path(WEFT_SOURCE_DIR) / "presets" / "scenes" / "sheet-on-sphere.json";
+  const int n = options.resolution;
+  const std::vector<std::string> overrides{
+      "cloths.0.mesh.grid.resolution=[" + std::to_string(n) + "," + std::to_string(n) + "]",
+      std::string("contact.self=") + (self ? "true" : "false"), "solver.threads=" + std::to_string(options.threads)};
+  ContactBenchRow row;
+  row.self = self;
+  std::vector<double> contactSamples, stepSamples;
+  ContactStats totals;
+  for (int repeat = 0; repeat < options.repeats; ++repeat) {
+    World world(loadScene(scene, overrides));
+    for (int s = 0; s < options.warmup; ++s) world.step();
+    const ContactStats before = world.contactStats();
+    for (int s = 0; s < options.steps; ++s) {
+      const double contactBefore = contactMs(world.profile());
+      const double totalBefore = world.profile().total();
+      world.step();
+      contactSamples.push_back(contactMs(world.profile()) - contactBefore);
+      stepSamples.push_back(world.profile().total() - totalBefore);
+    }
+    const ContactStats& after = world.contactStats();
+    totals.proximityImpulses += after.proximityImpulses - before.proximityImpulses;
+    totals.ccdIterations += after.ccdIterations - before.ccdIterations;
+    totals.ccdCollisions += after.ccdCollisions - before.ccdCollisions;
+    totals.impactZoneSteps += after.impactZoneSteps - before.impactZoneSteps;
+    totals.unresolvedSteps += after.unresolvedSteps - before.unresolvedSteps;
+    row.vertices = world.cloth(0).vertexCount();
+  }
+  const double samples = static_cast<double>(options.steps) * options.repeats;
+  row.medianContactMs = median(contactSamples);
+  row.maxContactMs = *std::max_element(contactSamples.begin(), contactSamples.end());
+  row.medianStepMs = median(stepSamples);
+  row.proximityImpulsesPerStep = totals.proximityImpulses / samples;
+  row.ccdIterationsPerStep = totals.ccdIterations / samples;
+  row.ccdCollisionsPerStep = totals.ccdCollisions / samples;
+  row.impactZoneStepShare = totals.impactZoneSteps / samples;
+  row.clean = totals.unresolvedSteps == 0;
+  return row;
+}
+
+}  // namespace
+
+int runContactBench(const ContactBenchOptions& options) {
+  std::vector<ContactBenchRow> rows;
+  try {
+    std::printf("%-6s %8s %16s %14s %14s %12s %10s %10s %10s\n", "self", "vertices", "contact ms/step", "max ms/step",
+                "whole ms/step", "prox imp/st", "ccd it/st", "ccd col/st", "zones/st");
+    for (bool self : {false, true}) {
+      const ContactBenchRow r = measure(options, self);
+      std::printf("%-6s %8d %16.3f %14.3f %14.3f %12.1f %10.2f %10.2f %10.2f%s\n", r.self ? "on" : "off", r.vertices,
+                  r.medianContactMs, r.maxContactMs, r.medianStepMs, r.proximityImpulsesPerStep, r.ccdIterationsPerStep,
+                  r.ccdCollisionsPerStep, r.impactZoneStepShare, r.clean ? "" : "  (unresolved steps!)");
+      std::fflush(stdout);
+      rows.push_back(r);
+    }
+  } catch (const InputError& e) {
+    std::cerr << "weft: " << e.what() << "\n";
+    return kExitBadInput;
+  }
+  std::ostringstream csv;
+  csv << "# weft bench --contact; machine: " << machineName() << "; cpu: " << cpuModel()
+      << "; cores: " << std::thread::hardware_concurrency() << "; threads: " << options.threads
+      << "; git: " << gitDescribe() << "; date: " << utcDate() << "; scene: sheet-on-sphere, " << options.resolution
+      << "^2, " << options.warmup << " warm-up steps, " << options.steps << " timed steps x " << options.repeats
+      << " repeats\n";
+  csv << "self_collision,vertices,median_contact_ms_per_step,max_contact_ms_per_step,median_step_ms,"
+         "proximity_impulses_per_step,ccd_iterations_per_step,ccd_collisions_per_step,impact_zone_steps_per_step,"
+         "resolved\n";
+  for (const auto& r : rows) {
+    csv << (r.self ? "on" : "off") << "," << r.vertices << "," << r.medianContactMs << "," << r.maxContactMs << ","
+        << r.medianStepMs << "," << r.proximityImpulsesPerStep << "," << r.ccdIterationsPerStep << ","
+        << r.ccdCollisionsPerStep << "," << r.impactZoneStepShare << "," << (r.clean ? "true" : "false") << "\n";
+  }
+  try {
+    const fs::path file(options.csv);
+    if (file.has_parent_path()) fs::create_directories(file.parent_path());
+    writeFileAtomically(file, csv.str());
+    std::printf("wrote %s\n", options.csv.c_str());
+  } catch (const std::exception& e) {
+    std::cerr << "weft: cannot write " << options.csv << ": " << e.what() << "\n";
+    return kExitFailure;
+  }
+  return kExitOk;
+}
+
+}  // namespace weft::app
