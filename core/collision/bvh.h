@@ -35,7 +35,23 @@ class Bvh {
   void selfOverlappingPairs(const std::function<void(int, int)>& visit) const;
 
  private:
-  // Implementation's choice (nodes in a flat array, leaf -> node map, ...).
+  // A node of the tree. Nodes are stored depth first: an internal node's left child is the next
+  // node, so a node's descendants always come after it and a backwards sweep refits bottom-up.
+  struct Node {
+    Aabb box;
+    int first = 0;  // leaf: first slot of its boxes in leafOrder_; internal: index of the right child
+    int count = 0;  // leaf: number of boxes (> 0); internal: 0
+    bool isLeaf() const { return count > 0; }
+  };
+
+  void refitNodes();
+  // Both queries: a simultaneous descent of this tree and `other` (itself when selfQuery, then
+  // reporting each unordered pair once, as (smaller id, larger id)).
+  void traverse(const Bvh& other, bool selfQuery, const std::function<void(int, int)>& visit) const;
+
+  std::vector<Node> nodes_;      // nodes_[0] is the root (empty vector: empty tree)
+  std::vector<int> leafOrder_;   // box id in each leaf slot; a leaf's boxes are contiguous slots
+  std::vector<Aabb> slotBoxes_;  // the box of each slot (box leafOrder_[s]), contiguous per leaf
 };
 
 }  // namespace weft

@@ -3,12 +3,34 @@
 // through the triangle BVHs of two meshes (or of one mesh against itself) and emitted once each
 // through feature ownership (collision_mesh.h). The narrow phase (ccd.h, closest_points.h) then
 // tests each pair exactly.
+#include <array>
 #include <vector>
 
 #include "collision/bvh.h"
 #include "collision/collision_mesh.h"
 
 namespace weft {
+
+// The vertices or the edges of a mesh grouped by the triangle that owns them (collision_mesh.h),
+// with their swept boxes: a triangle pair reads its candidates from two short contiguous runs.
+struct OwnedFeatures {
+  std::vector<int> start;   // triangle t owns ids[start[t] .. start[t + 1])
+  std::vector<int> ids;     // vertex or edge ids
+  std::vector<Aabb> boxes;  // swept over the step, not grown (the query adds its margin)
+};
+
+// What updateSweptMesh derives for findCandidatePairs and findSelfCandidatePairs: from the topology
+// when the BVH is built, and the feature boxes every step.
+struct SweptFeatures {
+  std::vector<std::array<int, 3>> triangles;  // the triangles the BVH and all below were built for
+  OwnedFeatures vertices;
+  OwnedFeatures edges;
+  // Self-collision candidates between triangles that share a corner. Their boxes always overlap,
+  // so a BVH would report these triangle pairs every step; listing their feature pairs once per
+  // topology is much cheaper than rediscovering them. Entries index the slots above:
+  std::vector<std::array<int, 2>> neighbourVertexFace;  // (slot in vertices, face)
+  std::vector<std::array<int, 2>> neighbourEdgeEdge;    // (slot in edges, slot in edges)
+};
 
 // Positions of a mesh at the start (x0) and end (x1) of the step, with its triangle boxes and BVH.
 struct SweptMesh {
@@ -17,10 +39,13 @@ struct SweptMesh {
   const std::vector<Vec3>* x1 = nullptr;
   std::vector<Aabb> triangleBoxes;  // swept over the step, grown by the margin
   Bvh bvh;
+  SweptFeatures features;  // maintained by updateSweptMesh
 };
 
-// Recomputes the triangle boxes (x0, x1, grown by `margin`), then builds the BVH if its leaf count
-// changed (first use or new topology) and refits it otherwise.
+// Recomputes the triangle boxes (x0, x1, grown by `margin`) and the feature boxes. Builds the BVH
+// and the topology-derived features if the mesh's triangles differ from those they were built for
+// (first use, or a tear or cut, even one that keeps the triangle count; a few milliseconds for an
+// 8k-triangle mesh), and refits the BVH otherwise.
 void updateSweptMesh(SweptMesh& swept, double margin);
 
 struct VertexFacePair {

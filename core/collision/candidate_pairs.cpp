@@ -1,0 +1,355 @@
+#include "collision/candidate_pairs.h"
+
+#include <algorithm>
+#include <array>
+#include <cassert>
+#include <cstdint>
+
+namespace weft {
+
+// Performance notes. A 64 x 64 cloth has ~8k triangles and ~65k overlapping triangle pairs per
+// step, and over 80% of those pairs are neighbours (they share a corner, so their boxes always
+// overlap). Hence: neighbours' feature pairs are listed once per topology
+// (SweptFeatures::neighbour*) and only their boxes are tested each step; the BVH's remaining
+// pairs read precomputed feature boxes in short runs; no branch depends on the outcome of a box
+// test (about half pass, which no branch predictor can learn); and the final ordering is a radix
+// sort rather than a comparison sort.
+
+namespace {
+
+// Box `a` grown by `margin` overlaps box `b` grown by `margin` (as 0 or 1, no branch). Computed
+// as (lo - margin) and (hi + margin), exactly what Aabb::inflate does, so the result is the same
+// as inflating both boxes and calling Aabb::overlaps.
+int overlapGrownBoth(const Aabb& a, const Aabb& b, double margin) {
+  return ((a.lo.x() - margin) <= (b.hi.x() + margin)) & ((b.lo.x() - margin) <= (a.hi.x() + margin)) &
+         ((a.lo.y() - margin) <= (b.hi.y() + margin)) & ((b.lo.y() - margin) <= (a.hi.y() + margin)) &
+         ((a.lo.z() - margin) <= (b.hi.z() + margin)) & ((b.lo.z() - margin) <= (a.hi.z() + margin));
+}
+
+// Box `a` grown by `margin` overlaps box `b`, which is grown already (a triangle box).
+int overlapGrownFirst(const Aabb& a, const Aabb& b, double margin) {
+  return ((a.lo.x() - margin) <= b.hi.x()) & (b.lo.x() <= (a.hi.x() + margin)) &
+         ((a.lo.y() - margin) <= b.hi.y()) & (b.lo.y() <= (a.hi.y() + margin)) &
+         ((a.lo.z() - margin) <= b.hi.z()) & (b.lo.z() <= (a.hi.z() + margin));
+}
+
+bool isCorner(const std::array<int, 3>& triangle, int v) {
+  return triangle[0] == v || triangle[1] == v || triangle[2] == v;
+}
+
+// Evaluated without branches: nine comparisons are cheaper than the mispredictions of
+// short-circuiting them on every triangle pair the BVH reports.
+bool shareCorner(const std::array<int, 3>& s, const std::array<int, 3>& t) {
+  int shared = 0;
+  for (int a : s) {
+    for (int b : t) shared |= a == b;
+  }
+  return shared != 0;
+}
+
+bool shareVertex(const std::array<int, 2>& e, const std::array<int, 2>& f) {
+  return e[0] == f[0] || e[0] == f[1] || e[1] == f[0] || e[1] == f[1];
+}
+
+// Groups the vertices (or edges) by owning triangle: the topology half of OwnedFeatures.
+void groupByOwner(const std::vector<std::array<int, 3>>& featuresOfTriangle, const std::vector<int>& owner,
+                  OwnedFeatures& owned) {
+  const int triangleCount = static_cast<int>(featuresOfTriangle.size());
+  owned.start.assign(triangleCount + 1, 0);
+  owned.ids.clear();
+  for (int t = 0; t < triangleCount; ++t) {
+    for (int feature : featuresOfTriangle[t]) {
+      if (owner[feature] == t) owned.ids.push_back(feature);
+    }
+    owned.start[t + 1] = static_cast<int>(owned.ids.size());
+  }
+  owned.boxes.resize(owned.ids.size());
+}
+
+// Lists the self-collision candidates of every pair of triangles sharing a corner: the features
+// each owns against the other (a vertex against a face, an edge against an edge), except those
+// touching by topology (the face's own corners, edges sharing a vertex).
+void listNeighbourCandidates(const CollisionMesh& mesh, SweptFeatures& features) {
+  const int triangleCount = static_cast<int>(mesh.triangles.size());
+  // The triangles around each vertex, in compressed rows.
+  std::vector<int> rowStart(mesh.vertexCount + 1, 0);
+  for (const auto& corners : mesh.triangles) {
+    for (int v : corners) ++rowStart[v + 1];
+  }
+  for (int v = 0; v < mesh.vertexCount; ++v) rowStart[v + 1] += rowStart[v];
+  std::vector<int> fill(rowStart.begin(), rowStart.end() - 1), trianglesAround(rowStart.back());
+  for (int t = 0; t < triangleCount; ++t) {
+    for (int v : mesh.triangles[t]) trianglesAround[fill[v]++] = t;
+  }
+
+  const OwnedFeatures& vertices = features.vertices;
+  const OwnedFeatures& edges = features.edges;
+  features.neighbourVertexFace.clear();
+  features.neighbourEdgeEdge.clear();
+  std::vector<int> neighbours;
+  for (int i = 0; i < triangleCount; ++i) {
+    neighbours.clear();
+    for (int v : mesh.triangles[i]) {
+      for (int k = rowStart[v]; k < rowStart[v + 1]; ++k) {
+        if (trianglesAround[k] > i) neighbours.push_back(trianglesAround[k]);
+      }
+    }
+    std::sort(neighbours.begin(), neighbours.end());
+    neighbours.erase(std::unique(neighbours.begin(), neighbours.end()), neighbours.end());
+    for (int j : neighbours) {
+      for (int s = vertices.start[i]; s < vertices.start[i + 1]; ++s) {
+        if (!isCorner(mesh.triangles[j], vertices.ids[s])) features.neighbourVertexFace.push_back({s, j});
+      }
+      for (int s = vertices.start[j]; s < vertices.start[j + 1]; ++s) {
+        if (!isCorner(mesh.triangles[i], vertices.ids[s])) features.neighbourVertexFace.push_back({s, i});
+      }
+      for (int s = edges.start[i]; s < edges.start[i + 1]; ++s) {
+        for (int t = edges.start[j]; t < edges.start[j + 1]; ++t) {
+          if (!shareVertex(mesh.edges[edges.ids[s]], mesh.edges[edges.ids[t]])) {
+            features.neighbourEdgeEdge.push_back({s, t});
+          }
+        }
+      }
+    }
+  }
+}
+
+// Collects pairs without a branch per candidate: each candidate is written to the next free slot
+// and the count moves past it only when it is kept. Full batches are appended to the output.
+template <class Pair>
+class PairBatch {
+ public:
+  explicit PairBatch(std::vector<Pair>& out) : out_(out) {}
+  ~PairBatch() { flush(); }
+  PairBatch(const PairBatch&) = delete;
+  PairBatch& operator=(const PairBatch&) = delete;
+
+  // Call before adding up to `count` candidates.
+  void reserve(int count) {
+    if (size_ + count > kCapacity) flush();
+  }
+  void add(int keep, const Pair& pair) {
+    slots_[size_] = pair;
+    size_ += keep;
+  }
+  void flush() {
+    out_.insert(out_.end(), slots_.begin(), slots_.begin() + size_);
+    size_ = 0;
+  }
+
+ private:
+  static constexpr int kCapacity = 256;
+  std::array<Pair, kCapacity> slots_;
+  int size_ = 0;
+  std::vector<Pair>& out_;
+};
+
+// The vertices triangle `owner` of `vertices` owns against face `face` of `faces`: the
+// vertex-face candidates of that triangle pair. (No exclusion: in self collision this is only
+// called for triangles that share no corner.)
+void addVertexFacePairs(const SweptMesh& vertices, int owner, const SweptMesh& faces, int face, double margin,
+                        PairBatch<VertexFacePair>& out) {
+  const OwnedFeatures& owned = vertices.features.vertices;
+  const Aabb& faceBox = faces.triangleBoxes[face];
+  out.reserve(3);
+  for (int s = owned.start[owner]; s < owned.start[owner + 1]; ++s) {
+    out.add(overlapGrownFirst(owned.boxes[s], faceBox, margin), {owned.ids[s], face});
+  }
+}
+
+// The edges triangle i of `a` owns against the edges triangle j of `b` owns. `kOrdered` (self
+// collision) stores each pair as (smaller, larger) id; a template parameter, so that the inner
+// loop carries no runtime flag.
+template <bool kOrdered>
+void addEdgeEdgePairs(const SweptMesh& a, int i, const SweptMesh& b, int j, double margin,
+                      PairBatch<EdgeEdgePair>& out) {
+  const OwnedFeatures& ownedA = a.features.edges;
+  const OwnedFeatures& ownedB = b.features.edges;
+  const int beginB = ownedB.start[j], endB = ownedB.start[j + 1];
+  if (beginB == endB) return;
+  out.reserve(9);
+  const Aabb& triangleBoxB = b.triangleBoxes[j];
+  for (int s = ownedA.start[i]; s < ownedA.start[i + 1]; ++s) {
+    const Aabb& boxA = ownedA.boxes[s];
+    // An edge of i that misses triangle j's box misses all of j's edges.
+    if (!overlapGrownFirst(boxA, triangleBoxB, margin)) continue;
+    const int ea = ownedA.ids[s];
+    for (int t = beginB; t < endB; ++t) {
+      const int eb = ownedB.ids[t];
+      const int keep = overlapGrownBoth(boxA, ownedB.boxes[t], margin);
+      out.add(keep, kOrdered ? EdgeEdgePair{std::min(ea, eb), std::max(ea, eb)} : EdgeEdgePair{ea, eb});
+    }
+  }
+}
+
+int bitsFor(int count) {
+  int bits = 0;
+  while (bits < 31 && (1 << bits) < count) ++bits;
+  return bits;
+}
+
+// Sorts pairs by (first, second) and drops repeats: a least-significant-digit radix sort on the
+// pair packed into one integer (first << bits of second | second). Linear in the number of pairs;
+// a comparison sort was the most expensive stage of the search. One scratch copy per call (after
+// the first step the allocator hands back the same memory without new pages).
+template <class Pair, class First, class Second>
+void sortPairs(std::vector<Pair>& pairs, int secondCount, First first, Second second) {
+  const int shift = bitsFor(secondCount);
+  auto key = [&](const Pair& p) {
+    return (static_cast<std::uint64_t>(first(p)) << shift) | static_cast<std::uint64_t>(second(p));
+  };
+  std::uint64_t largest = 0;
+  for (const Pair& p : pairs) largest = std::max(largest, key(p));
+  constexpr int kDigitBits = 11;
+  constexpr std::uint64_t kDigitMask = (std::uint64_t{1} << kDigitBits) - 1;
+  std::vector<Pair> scratch(pairs.size());
+  for (int low = 0; low < 64 && (largest >> low) != 0; low += kDigitBits) {
+    std::array<int, (1 << kDigitBits) + 1> offsets{};
+    for (const Pair& p : pairs) ++offsets[((key(p) >> low) & kDigitMask) + 1];
+    for (size_t d = 1; d < offsets.size(); ++d) offsets[d] += offsets[d - 1];
+    for (const Pair& p : pairs) scratch[offsets[(key(p) >> low) & kDigitMask]++] = p;
+    pairs.swap(scratch);
+  }
+  // Ownership emits every pair once, so unique removes nothing unless that invariant breaks.
+  const auto end =
+      std::unique(pairs.begin(), pairs.end(), [&](const Pair& p, const Pair& q) { return key(p) == key(q); });
+  assert(end == pairs.end() && "a primitive pair was emitted twice");
+  pairs.erase(end, pairs.end());
+}
+
+void sortVertexFacePairs(std::vector<VertexFacePair>& pairs, int faceCount) {
+  sortPairs(pairs, faceCount, [](const VertexFacePair& p) { return p.vertex; },
+            [](const VertexFacePair& p) { return p.face; });
+}
+
+void sortEdgeEdgePairs(std::vector<EdgeEdgePair>& pairs, int edgeCountB) {
+  sortPairs(pairs, edgeCountB, [](const EdgeEdgePair& p) { return p.edgeA; },
+            [](const EdgeEdgePair& p) { return p.edgeB; });
+}
+
+int triangleCount(const SweptMesh& swept) { return static_cast<int>(swept.mesh->triangles.size()); }
+int edgeCount(const SweptMesh& swept) { return static_cast<int>(swept.mesh->edges.size()); }
+
+bool isUpToDate(const SweptMesh& swept) {
+  return swept.bvh.leafCount() == triangleCount(swept) && swept.features.triangles == swept.mesh->triangles;
+}
+
+}  // namespace
+
+void updateSweptMesh(SweptMesh& swept, double margin) {
+  assert(swept.mesh && swept.x0 && swept.x1);
+  const CollisionMesh& mesh = *swept.mesh;
+  const std::vector<Vec3>& x0 = *swept.x0;
+  const std::vector<Vec3>& x1 = *swept.x1;
+  const size_t count = mesh.triangles.size();
+  swept.triangleBoxes.resize(count);
+  for (size_t t = 0; t < count; ++t) {
+    Aabb box;
+    for (int v : mesh.triangles[t]) {
+      box.grow(x0[v]);
+      box.grow(x1[v]);
+    }
+    box.inflate(margin);
+    swept.triangleBoxes[t] = box;
+  }
+
+  // Any topology change, including one that keeps the triangle count, invalidates the ownership
+  // groups and neighbour lists (and the tree's shape, which was chosen for the old triangles'
+  // neighbourhoods). Comparing the triangle lists costs about a memcmp of them.
+  SweptFeatures& features = swept.features;
+  if (!isUpToDate(swept)) {
+    swept.bvh.build(swept.triangleBoxes);
+    features.triangles = mesh.triangles;
+    groupByOwner(mesh.triangles, mesh.vertexOwner, features.vertices);
+    groupByOwner(mesh.triangleEdges, mesh.edgeOwner, features.edges);
+    listNeighbourCandidates(mesh, features);
+  } else {
+    swept.bvh.refit(swept.triangleBoxes);
+  }
+
+  for (size_t s = 0; s < features.vertices.ids.size(); ++s) {
+    const int v = features.vertices.ids[s];
+    Aabb box;
+    box.grow(x0[v]);
+    box.grow(x1[v]);
+    features.vertices.boxes[s] = box;
+  }
+  for (size_t s = 0; s < features.edges.ids.size(); ++s) {
+    Aabb box;
+    for (int v : mesh.edges[features.edges.ids[s]]) {
+      box.grow(x0[v]);
+      box.grow(x1[v]);
+    }
+    features.edges.boxes[s] = box;
+  }
+}
+
+void findCandidatePairs(const SweptMesh& a, const SweptMesh& b, double margin, CandidatePairs& out) {
+  assert(isUpToDate(a) && isUpToDate(b) && "call updateSweptMesh after a topology change");
+  out.clear();
+  {
+    PairBatch<VertexFacePair> vfAB(out.vfAB), vfBA(out.vfBA);
+    PairBatch<EdgeEdgePair> ee(out.ee);
+    // Triangle pair (i, j) emits the vertex-face pairs of the vertices each one owns against the
+    // other, and the edge-edge pairs of the edges both own: every primitive pair has exactly one
+    // owning triangle pair, so none is emitted twice.
+    a.bvh.overlappingPairs(b.bvh, [&](int i, int j) {
+      addVertexFacePairs(a, i, b, j, margin, vfAB);
+      addVertexFacePairs(b, j, a, i, margin, vfBA);
+      addEdgeEdgePairs<false>(a, i, b, j, margin, ee);
+    });
+  }
+  sortVertexFacePairs(out.vfAB, triangleCount(b));
+  sortVertexFacePairs(out.vfBA, triangleCount(a));
+  sortEdgeEdgePairs(out.ee, edgeCount(b));
+}
+
+void findSelfCandidatePairs(const SweptMesh& a, double margin, CandidatePairs& out) {
+  assert(isUpToDate(a) && "call updateSweptMesh after a topology change");
+  out.clear();
+  const SweptFeatures& features = a.features;
+  const std::vector<std::array<int, 3>>& triangles = a.mesh->triangles;
+  {
+    PairBatch<VertexFacePair> vf(out.vfAB);
+    PairBatch<EdgeEdgePair> ee(out.ee);
+    // Triangle pairs from the BVH, which reports each unordered pair {i, j} once, so both
+    // directions are emitted. Pairs sharing a corner are dropped here (their candidates are
+    // listed, below); the remaining "distant" pairs' features never touch by topology. (A
+    // triangle is never paired with itself and needs not be: its own features are all adjacent.)
+    // The BVH's pairs are first filtered into a small buffer without a branch, as over 80% of
+    // them are neighbours in a cloth, and then processed in one loop.
+    std::array<std::pair<int, int>, 256> distant;
+    int distantCount = 0;
+    auto processDistant = [&] {
+      for (int k = 0; k < distantCount; ++k) {
+        const auto [i, j] = distant[k];
+        addVertexFacePairs(a, i, a, j, margin, vf);
+        addVertexFacePairs(a, j, a, i, margin, vf);
+        addEdgeEdgePairs<true>(a, i, a, j, margin, ee);
+      }
+      distantCount = 0;
+    };
+    a.bvh.selfOverlappingPairs([&](int i, int j) {
+      distant[distantCount] = {i, j};
+      distantCount += shareCorner(triangles[i], triangles[j]) ? 0 : 1;
+      if (distantCount == static_cast<int>(distant.size())) processDistant();
+    });
+    processDistant();
+    // Triangles sharing a corner: their candidates are listed, only the boxes are tested.
+    for (const auto& [slot, face] : features.neighbourVertexFace) {
+      vf.reserve(1);
+      vf.add(overlapGrownFirst(features.vertices.boxes[slot], a.triangleBoxes[face], margin),
+             {features.vertices.ids[slot], face});
+    }
+    for (const auto& [slotA, slotB] : features.neighbourEdgeEdge) {
+      ee.reserve(1);
+      const int ea = features.edges.ids[slotA], eb = features.edges.ids[slotB];
+      ee.add(overlapGrownBoth(features.edges.boxes[slotA], features.edges.boxes[slotB], margin),
+             {std::min(ea, eb), std::max(ea, eb)});
+    }
+  }
+  sortVertexFacePairs(out.vfAB, triangleCount(a));
+  sortEdgeEdgePairs(out.ee, edgeCount(a));
+}
+
+}  // namespace weft

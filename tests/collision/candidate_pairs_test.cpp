@@ -1,0 +1,271 @@
+#include "collision/candidate_pairs.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <random>
+#include <utility>
+#include <vector>
+
+#include "support/collision_meshes.h"
+
+namespace weft {
+namespace {
+
+using PairList = std::vector<std::pair<int, int>>;
+
+// A mesh moving over one step.
+struct Motion {
+  CollisionMesh mesh;
+  std::vector<Vec3> x0, x1;
+};
+
+SweptMesh sweep(const Motion& motion, double margin) {
+  SweptMesh swept;
+  swept.mesh = &motion.mesh;
+  swept.x0 = &motion.x0;
+  swept.x1 = &motion.x1;
+  updateSweptMesh(swept, margin);
+  return swept;
+}
+
+// The swept box of some vertices over the step, grown by the margin (computed the same way as
+// the implementation documents, so the comparison with it is exact).
+Aabb sweptBox(const Motion& m, std::initializer_list<int> vertices, double margin) {
+  Aabb box;
+  for (int v : vertices) {
+    box.grow(m.x0[v]);
+    box.grow(m.x1[v]);
+  }
+  box.inflate(margin);
+  return box;
+}
+
+Aabb faceBox(const Motion& m, int f, double margin) {
+  const auto& t = m.mesh.triangles[f];
+  return sweptBox(m, {t[0], t[1], t[2]}, margin);
+}
+
+Aabb edgeBox(const Motion& m, int e, double margin) {
+  return sweptBox(m, {m.mesh.edges[e][0], m.mesh.edges[e][1]}, margin);
+}
+
+bool isCorner(const std::array<int, 3>& t, int v) { return t[0] == v || t[1] == v || t[2] == v; }
+
+PairList toList(const std::vector<VertexFacePair>& pairs) {
+  PairList list;
+  for (const auto& p : pairs) list.emplace_back(p.vertex, p.face);
+  return list;
+}
+
+PairList toList(const std::vector<EdgeEdgePair>& pairs) {
+  PairList list;
+  for (const auto& p : pairs) list.emplace_back(p.edgeA, p.edgeB);
+  return list;
+}
+
+// Every vertex of `vertices` (in some triangle) against every face of `faces` whose boxes overlap.
+PairList bruteForceVertexFace(const Motion& vertices, const Motion& faces, double margin, bool self) {
+  std::vector<Aabb> faceBoxes;
+  for (int f = 0; f < static_cast<int>(faces.mesh.triangles.size()); ++f) faceBoxes.push_back(faceBox(faces, f, margin));
+  PairList pairs;
+  for (int v = 0; v < vertices.mesh.vertexCount; ++v) {
+    if (vertices.mesh.vertexOwner[v] < 0) continue;
+    const Aabb box = sweptBox(vertices, {v}, margin);
+    for (int f = 0; f < static_cast<int>(faceBoxes.size()); ++f) {
+      if (self && isCorner(faces.mesh.triangles[f], v)) continue;
+      if (box.overlaps(faceBoxes[f])) pairs.emplace_back(v, f);
+    }
+  }
+  return pairs;
+}
+
+PairList bruteForceEdgeEdge(const Motion& a, const Motion& b, double margin, bool self) {
+  std::vector<Aabb> boxesB;
+  for (int e = 0; e < static_cast<int>(b.mesh.edges.size()); ++e) boxesB.push_back(edgeBox(b, e, margin));
+  PairList pairs;
+  for (int ea = 0; ea < static_cast<int>(a.mesh.edges.size()); ++ea) {
+    const Aabb box = edgeBox(a, ea, margin);
+    for (int eb = self ? ea + 1 : 0; eb < static_cast<int>(boxesB.size()); ++eb) {
+      if (self) {
+        const auto& p = a.mesh.edges[ea];
+        const auto& q = b.mesh.edges[eb];
+        if (p[0] == q[0] || p[0] == q[1] || p[1] == q[0] || p[1] == q[1]) continue;
+      }
+      if (box.overlaps(boxesB[eb])) pairs.emplace_back(ea, eb);
+    }
+  }
+  return pairs;
+}
+
+// Sorted, strictly: no pair twice.
+void expectStrictlyIncreasing(const PairList& pairs) {
+  for (size_t k = 1; k < pairs.size(); ++k) ASSERT_LT(pairs[k - 1], pairs[k]) << "at " << k;
+}
+
+// A cloth grid with noisy height, crossing a sphere, both moving randomly over the step.
+std::pair<Motion, Motion> clothThroughSphere(std::mt19937& rng) {
+  std::normal_distribution<double> noise(0.0, 0.02);
+  const test::PositionedMesh grid = test::gridMesh(7, 1.0);
+  const test::PositionedMesh sphere = test::icosphere(1, Vec3(0.5, 0.45, 0.05), 0.3);
+  Motion cloth{grid.mesh, grid.x, grid.x};
+  Motion obstacle{sphere.mesh, sphere.x, sphere.x};
+  for (size_t v = 0; v < cloth.x0.size(); ++v) {
+    cloth.x0[v].z() += noise(rng);
+    cloth.x1[v] = cloth.x0[v] + Vec3(noise(rng), noise(rng), noise(rng) - 0.05);
+  }
+  for (size_t v = 0; v < obstacle.x0.size(); ++v) obstacle.x1[v] = obstacle.x0[v] + Vec3(0.01, 0.0, noise(rng));
+  return {cloth, obstacle};
+}
+
+// A grid folded over itself along x = 0.5 with a small gap between the layers, moving noisily.
+Motion foldedCloth(std::mt19937& rng, int n) {
+  std::normal_distribution<double> noise(0.0, 0.01);
+  const test::PositionedMesh grid = test::gridMesh(n, 1.0);
+  Motion cloth{grid.mesh, grid.x, grid.x};
+  for (size_t v = 0; v < cloth.x0.size(); ++v) {
+    Vec3& p = cloth.x0[v];
+    if (p.x() > 0.5) p = Vec3(1.0 - p.x(), p.y(), 0.04 * (p.x() - 0.5) / 0.5);
+    p += Vec3(noise(rng), noise(rng), noise(rng));
+    cloth.x1[v] = p + Vec3(noise(rng), noise(rng), noise(rng));
+  }
+  return cloth;
+}
+
+TEST(CandidatePairs, MeshAgainstMeshEqualsTheBruteForceEnumeration) {
+  std::mt19937 rng(21);
+  for (int trial = 0; trial < 4; ++trial) {
+    const double margin = trial == 0 ? 0.0 : 0.01 * trial;
+    const auto [cloth, sphere] = clothThroughSphere(rng);
+    const SweptMesh a = sweep(cloth, margin), b = sweep(sphere, margin);
+    CandidatePairs pairs;
+    findCandidatePairs(a, b, margin, pairs);
+    const PairList vfAB = toList(pairs.vfAB), vfBA = toList(pairs.vfBA), ee = toList(pairs.ee);
+    expectStrictlyIncreasing(vfAB);
+    expectStrictlyIncreasing(vfBA);
+    expectStrictlyIncreasing(ee);
+    EXPECT_EQ(vfAB, bruteForceVertexFace(cloth, sphere, margin, false)) << "trial " << trial;
+    EXPECT_EQ(vfBA, bruteForceVertexFace(sphere, cloth, margin, false)) << "trial " << trial;
+    EXPECT_EQ(ee, bruteForceEdgeEdge(cloth, sphere, margin, false)) << "trial " << trial;
+    EXPECT_GT(pairs.size(), 50u) << "the meshes should be in contact";
+    EXPECT_EQ(pairs.size(), vfAB.size() + vfBA.size() + ee.size());
+  }
+}
+
+TEST(CandidatePairs, SelfPairsEqualTheBruteForceEnumerationWithoutAdjacentFeatures) {
+  std::mt19937 rng(22);
+  for (int trial = 0; trial < 4; ++trial) {
+    const double margin = 0.005 * trial;
+    const Motion cloth = foldedCloth(rng, 9);
+    const SweptMesh swept = sweep(cloth, margin);
+    CandidatePairs pairs;
+    findSelfCandidatePairs(swept, margin, pairs);
+    EXPECT_TRUE(pairs.vfBA.empty());
+    const PairList vf = toList(pairs.vfAB), ee = toList(pairs.ee);
+    expectStrictlyIncreasing(vf);
+    expectStrictlyIncreasing(ee);
+    EXPECT_EQ(vf, bruteForceVertexFace(cloth, cloth, margin, true)) << "trial " << trial;
+    EXPECT_EQ(ee, bruteForceEdgeEdge(cloth, cloth, margin, true)) << "trial " << trial;
+    EXPECT_GT(vf.size(), 100u) << "the layers should be in contact";
+  }
+}
+
+TEST(CandidatePairs, SelfPairsOfALargerClothEqualTheBruteForceEnumeration) {
+  // 40 x 40 vertices: pair keys need more than 22 bits, so every digit pass of the sort is used.
+  std::mt19937 rng(25);
+  const Motion cloth = foldedCloth(rng, 40);
+  const double margin = 0.004;
+  const SweptMesh swept = sweep(cloth, margin);
+  CandidatePairs pairs;
+  findSelfCandidatePairs(swept, margin, pairs);
+  EXPECT_EQ(toList(pairs.vfAB), bruteForceVertexFace(cloth, cloth, margin, true));
+  EXPECT_EQ(toList(pairs.ee), bruteForceEdgeEdge(cloth, cloth, margin, true));
+}
+
+TEST(CandidatePairs, SelfPairsNeverJoinAFaceToItsCornersOrEdgesThatShareAVertex) {
+  // A flat grid with a margin wider than a cell: every neighbour's box overlaps, so only the
+  // exclusion keeps adjacent features out.
+  const test::PositionedMesh grid = test::gridMesh(6, 1.0);
+  const Motion cloth{grid.mesh, grid.x, grid.x};
+  const double margin = 0.3;
+  const SweptMesh swept = sweep(cloth, margin);
+  CandidatePairs pairs;
+  findSelfCandidatePairs(swept, margin, pairs);
+  for (const VertexFacePair& p : pairs.vfAB) EXPECT_FALSE(isCorner(cloth.mesh.triangles[p.face], p.vertex));
+  for (const EdgeEdgePair& p : pairs.ee) {
+    const auto& a = cloth.mesh.edges[p.edgeA];
+    const auto& b = cloth.mesh.edges[p.edgeB];
+    EXPECT_LT(p.edgeA, p.edgeB);
+    EXPECT_TRUE(a[0] != b[0] && a[0] != b[1] && a[1] != b[0] && a[1] != b[1]);
+  }
+  EXPECT_EQ(toList(pairs.vfAB), bruteForceVertexFace(cloth, cloth, margin, true));
+  EXPECT_EQ(toList(pairs.ee), bruteForceEdgeEdge(cloth, cloth, margin, true));
+}
+
+TEST(CandidatePairs, UpdateRebuildsOnATopologyChangeThatKeepsTheTriangleCount) {
+  std::mt19937 rng(23);
+  Motion cloth = foldedCloth(rng, 8);
+  const double margin = 0.01;
+  SweptMesh swept;
+  swept.mesh = &cloth.mesh;
+  swept.x0 = &cloth.x0;
+  swept.x1 = &cloth.x1;
+  updateSweptMesh(swept, margin);
+  EXPECT_EQ(swept.features.triangles, cloth.mesh.triangles);
+
+  // Flip the diagonal of every cell (makeGrid stores a cell's two triangles one after the other):
+  // same vertices, same triangle count, other triangles.
+  std::vector<std::array<int, 3>> flipped;
+  for (size_t t = 0; t < cloth.mesh.triangles.size(); t += 2) {
+    const auto& first = cloth.mesh.triangles[t];
+    const auto& second = cloth.mesh.triangles[t + 1];
+    std::vector<int> diagonal;
+    int loneFirst = -1, loneSecond = -1;
+    for (int v : first) {
+      if (isCorner(second, v)) {
+        diagonal.push_back(v);
+      } else {
+        loneFirst = v;
+      }
+    }
+    for (int v : second) {
+      if (!isCorner(first, v)) loneSecond = v;
+    }
+    ASSERT_EQ(diagonal.size(), 2u);
+    flipped.push_back({loneFirst, diagonal[0], loneSecond});
+    flipped.push_back({loneFirst, loneSecond, diagonal[1]});
+  }
+  const CollisionMesh before = cloth.mesh;
+  cloth.mesh = makeCollisionMesh(before.vertexCount, flipped);
+  ASSERT_EQ(cloth.mesh.triangles.size(), before.triangles.size());
+  updateSweptMesh(swept, margin);
+  EXPECT_EQ(swept.features.triangles, cloth.mesh.triangles);
+
+  CandidatePairs pairs;
+  findSelfCandidatePairs(swept, margin, pairs);
+  EXPECT_EQ(toList(pairs.vfAB), bruteForceVertexFace(cloth, cloth, margin, true));
+  EXPECT_EQ(toList(pairs.ee), bruteForceEdgeEdge(cloth, cloth, margin, true));
+
+  // Moving the vertices without changing the topology refits; the pairs follow the motion.
+  for (Vec3& p : cloth.x1) p.z() *= -1.0;
+  updateSweptMesh(swept, margin);
+  findSelfCandidatePairs(swept, margin, pairs);
+  EXPECT_EQ(toList(pairs.vfAB), bruteForceVertexFace(cloth, cloth, margin, true));
+  EXPECT_EQ(toList(pairs.ee), bruteForceEdgeEdge(cloth, cloth, margin, true));
+}
+
+TEST(CandidatePairs, ResultsDoNotDependOnEarlierCalls) {
+  std::mt19937 rng(24);
+  const auto [cloth, sphere] = clothThroughSphere(rng);
+  const SweptMesh a = sweep(cloth, 0.01), b = sweep(sphere, 0.01);
+  CandidatePairs first, reused;
+  findCandidatePairs(a, b, 0.01, first);
+  findSelfCandidatePairs(a, 0.01, reused);  // leaves other content behind in `reused`
+  findCandidatePairs(a, b, 0.01, reused);
+  EXPECT_EQ(toList(first.vfAB), toList(reused.vfAB));
+  EXPECT_EQ(toList(first.vfBA), toList(reused.vfBA));
+  EXPECT_EQ(toList(first.ee), toList(reused.ee));
+}
+
+}  // namespace
+}  // namespace weft
