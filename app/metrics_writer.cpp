@@ -100,6 +100,7 @@ nlohmann::ordered_json runMetrics(const World& world, double wallSeconds) {
         {"impact_zones", c.impactZones},
         {"unresolved_steps", c.unresolvedSteps},
         {"sharp_contacts", c.sharpContacts},
+        {"held_vertices", c.heldVertices},
     };
   }
   j["state_hash"] = hashHex(world.stateHash());

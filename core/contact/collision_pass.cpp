@@ -17,7 +17,9 @@ namespace {
 // restores the full thickness).
 constexpr double kSeparationFraction = 0.1;
 
-bool findHit(const std::vector<ContactBody>& bodies, const PrimitivePair& pair, Collision& out) {
+}  // namespace
+
+bool detectCrossing(const std::vector<ContactBody>& bodies, const PrimitivePair& pair, Collision& out) {
   const ContactBody& A = bodies[pair.bodyA];
   const ContactBody& B = bodies[pair.bodyB];
   const std::vector<Vec3>&a0 = *A.x0, &a1 = *A.x1, &b0 = *B.x0, &b1 = *B.x1;
@@ -43,6 +45,8 @@ bool findHit(const std::vector<ContactBody>& bodies, const PrimitivePair& pair, 
   out.pair = pair;
   return true;
 }
+
+namespace {
 
 void recordIfSharp(const std::vector<ContactBody>& bodies, const Collision& c, const ImpulseResult& impulse,
                    const std::vector<int>& bodyToWorldIndex, std::vector<SharpContactRecord>& records) {
@@ -113,7 +117,7 @@ long long stopAtGround(std::vector<ContactBody>& bodies, const ContactStepSettin
 
 bool detectCollision(const std::vector<ContactBody>& bodies, const PrimitivePair& pair,
                      const ContactStepSettings& settings, Collision& out) {
-  if (!findHit(bodies, pair, out)) return false;
+  if (!detectCrossing(bodies, pair, out)) return false;
   // Separation along the normal at the start (>= 0 up to rounding: the normal points to a's side
   // at t = 0), and the relative normal velocity that ends the step a small gap apart.
   const double startGap =

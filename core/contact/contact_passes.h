@@ -75,6 +75,9 @@ struct Collision {
 };
 bool detectCollision(const std::vector<ContactBody>& bodies, const PrimitivePair& pair,
                      const ContactStepSettings& settings, Collision& out);
+// Any CCD hit of the pair over the step, whatever the velocities (pass 3 merges every one: only a
+// state with no hit at all is safe).
+bool detectCrossing(const std::vector<ContactBody>& bodies, const PrimitivePair& pair, Collision& out);
 
 // Cloth vertices that would end the step below the ground plane stop just above it (an exact
 // test: the plane is flat, so no edge or face can cross it without a vertex). Returns how many.

@@ -21,7 +21,10 @@ ContactStage::ContactStage(const Scene& scene) : spec_(scene.contact), ground_(s
   if (scene.stages.collision) {
     for (int c = 0; c < clothCount; ++c) {
       if (spec_.obstacles) {
-        for (int o = 0; o < obstacleCount; ++o) pairing_.between.emplace_back(c, clothCount + o);
+        for (int o = 0; o < obstacleCount; ++o) {
+          pairing_.between.emplace_back(c, clothCount + o);
+          if (scene.obstacles[o].motion == ObstacleMotion::Dynamic) dynamicPairing_.between.emplace_back(c, clothCount + o);
+        }
       }
       if (spec_.self) {
         pairing_.self.push_back(c);
@@ -33,6 +36,7 @@ ContactStage::ContactStage(const Scene& scene) : spec_(scene.contact), ground_(s
   if (!groundRuns) ground_.enabled = false;
   runs_ = !pairing_.empty() || groundRuns;
   selfCollision_ = !pairing_.self.empty();
+  holdsVertices_ = !dynamicPairing_.empty() && scene.solver.integrator == IntegratorKind::LinearizedBackwardEuler;
   bodies_.resize(static_cast<std::size_t>(clothCount + obstacleCount));
   clothTopology_.resize(static_cast<std::size_t>(clothCount));
   clothInverseMass_.resize(static_cast<std::size_t>(clothCount));
@@ -111,6 +115,10 @@ void ContactStage::resolve(std::vector<Cloth>& cloths, const std::vector<std::ve
     ++stats_.impactZoneSteps;
     runImpactZonePass(bodies_, pairing_, settings, scratch_, pairs_, counts);
   }
+  if (holdsVertices_) {
+    StageTimer timer(profile, "contact_held");
+    held_.collect(bodies_, dynamicPairing_, bodyToWorldIndex_, 2.0 * spec_.thickness, scratch_, pairs_);
+  }
   ++stats_.steps;
   stats_.proximityImpulses += counts.proximityImpulses;
   stats_.groundContacts += counts.groundContacts;
@@ -120,6 +128,23 @@ void ContactStage::resolve(std::vector<Cloth>& cloths, const std::vector<std::ve
   stats_.impactZones += counts.impactZones;
   stats_.unresolvedSteps += counts.unresolved ? 1 : 0;
   stats_.sharpContacts += static_cast<long long>(records_.size());
+}
+
+void ContactStage::prescribeHeldVertices(const std::vector<Cloth>& cloths, const std::vector<Obstacle>& obstacles,
+                                         double h) {
+  if (!holdsVertices_) return;
+  held_.prescribe(cloths, obstacles, h, heldVertices_);
+  stats_.heldVertices += static_cast<long long>(held_.size());
+}
+
+std::vector<HeldVertex>* ContactStage::heldVertices(int cloth) {
+  if (!holdsVertices_ || heldVertices_[cloth].empty()) return nullptr;
+  return &heldVertices_[cloth];
+}
+
+void ContactStage::applyHeldReactions(const std::vector<Cloth>& cloths, std::vector<Obstacle>& obstacles, double h) {
+  if (!holdsVertices_) return;
+  held_.applyReactions(cloths, obstacles, heldVertices_, h);
 }
 
 }  // namespace weft

@@ -12,6 +12,7 @@
 #include "contact/contact_body.h"
 #include "contact/contact_pairs.h"
 #include "contact/contact_passes.h"
+#include "contact/held_contacts.h"
 #include "scene/scene.h"
 #include "sim/stage_profile.h"
 
@@ -32,6 +33,7 @@ struct ContactStats {
   long long impactZones = 0;         // zones moved rigidly (summed over steps)
   long long unresolvedSteps = 0;     // steps where pass 3 hit its bound with collisions left
   long long sharpContacts = 0;       // sharp-tool records made
+  long long heldVertices = 0;        // cloth vertices held by dynamic obstacles in the solve (summed over steps)
 };
 
 class ContactStage {
@@ -46,6 +48,13 @@ class ContactStage {
   // changed in place. Obstacles must have begun the step (beginObstacleStep).
   void resolve(std::vector<Cloth>& cloths, const std::vector<std::vector<Vec3>>& startPositions,
                std::vector<Obstacle>& obstacles, double h, StageProfile& profile);
+
+  // Two-way coupling with dynamic obstacles inside the solve (held_contacts.h): before the
+  // integrators, the velocities of the cloth vertices resting on a dynamic obstacle; after them,
+  // the reactions to the obstacles. heldVertices(c) is null when cloth c holds none.
+  void prescribeHeldVertices(const std::vector<Cloth>& cloths, const std::vector<Obstacle>& obstacles, double h);
+  std::vector<HeldVertex>* heldVertices(int cloth);
+  void applyHeldReactions(const std::vector<Cloth>& cloths, std::vector<Obstacle>& obstacles, double h);
 
   const ContactStats& stats() const { return stats_; }
   // Sharp-tool contacts of the latest step (cutting reads these).
@@ -65,6 +74,10 @@ class ContactStage {
   std::vector<std::vector<double>> clothInverseMass_;
   std::vector<int> bodyToWorldIndex_;
   ContactPairing pairing_;
+  ContactPairing dynamicPairing_;  // cloths against dynamic obstacles (held contacts)
+  bool holdsVertices_ = false;     // the integrator takes held vertices (linearized backward Euler)
+  HeldContacts held_;
+  std::vector<std::vector<HeldVertex>> heldVertices_;
   CandidatePairs scratch_;
   std::vector<PrimitivePair> pairs_;
   ContactStats stats_;

@@ -209,7 +209,7 @@ void runImpactZonePass(std::vector<ContactBody>& bodies, const ContactPairing& p
     findPrimitivePairs(bodies, pairing, 0.0, scratch, pairs);
     for (const PrimitivePair& pair : pairs) {
       Collision c;
-      if (!detectCollision(bodies, pair, settings, c)) continue;
+      if (!detectCrossing(bodies, pair, c)) continue;
       mergeCollision(bodies, index, c, zones);
       ++collisions;
     }

@@ -17,6 +17,18 @@ namespace weft {
 struct Cloth;
 struct SolverStats;
 
+// A cloth vertex resting on a dynamic obstacle (contact/held_contacts.h). In this step's implicit
+// solve the vertex carries a share of the obstacle's mass moving at the obstacle's velocity there:
+// its row of the system gains (m_share) v = m_share * velocity, so the cloth's stiffness and the
+// obstacle's inertia meet inside the solve. The impulse the vertex received that way is reported
+// back; the obstacle takes its opposite (momentum is exchanged exactly).
+struct HeldVertex {
+  int vertex = 0;
+  Vec3 velocity = Vec3::Zero();  // the obstacle's velocity at the vertex (m/s)
+  double massShare = 0.0;        // kg
+  Vec3 reaction = Vec3::Zero();  // out: impulse the vertex received from the obstacle (N s)
+};
+
 struct StepInputs {
   double time = 0.0;  // time at the start of the step (s)
   double dt = 0.0;    // step length (s)
@@ -25,6 +37,8 @@ struct StepInputs {
   DampingSpec damping;
   bool bending = true;
   int threads = 1;
+  // Linearized backward Euler only (the other integrators leave contact to the impulses).
+  std::vector<HeldVertex>* heldVertices = nullptr;
 };
 
 class Integrator {

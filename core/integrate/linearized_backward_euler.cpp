@@ -32,6 +32,13 @@ void LinearizedBackwardEuler::advance(Cloth& cloth, const StepInputs& in, StageP
     const auto fExt = flat(system_.externalForce);
     for (int i = 0; i < n; ++i)
       system_.rhs.segment<3>(3 * i) = mesh.mass[i] * v.segment<3>(3 * i) + h * (fInt.segment<3>(3 * i) + fExt.segment<3>(3 * i));
+    // A vertex resting on a dynamic obstacle carries a share of its mass (integrator.h HeldVertex).
+    if (in.heldVertices != nullptr) {
+      for (const HeldVertex& held : *in.heldVertices) {
+        system_.matrix.addDiagonal(held.vertex, held.massShare);
+        system_.rhs.segment<3>(3 * held.vertex) += held.massShare * held.velocity;
+      }
+    }
     // Pinned vertices move at the velocity that takes them to their scripted target.
     system_.known.setZero(3 * n);
     for (size_t k = 0; k < system_.pinnedVertices.size(); ++k) {
@@ -48,9 +55,17 @@ void LinearizedBackwardEuler::advance(Cloth& cloth, const StepInputs& in, StageP
   system_.solve(system_.rhs, impulseScale, system_.solution, profile, stats);
 
   StageTimer timer(profile, "update");
+  reportReactions(in);
   flat(mesh.v) = system_.solution;
   for (int i = 0; i < n; ++i) mesh.x[i] += h * mesh.v[i];
   for (size_t k = 0; k < system_.pinnedVertices.size(); ++k) mesh.x[system_.pinnedVertices[k]] = system_.pinnedTargets[k];
+}
+
+void LinearizedBackwardEuler::reportReactions(const StepInputs& in) {
+  if (in.heldVertices == nullptr) return;
+  for (HeldVertex& held : *in.heldVertices) {
+    held.reaction = held.massShare * (held.velocity - system_.solution.segment<3>(3 * held.vertex));
+  }
 }
 
 }  // namespace weft

@@ -12,6 +12,9 @@ class LinearizedBackwardEuler final : public Integrator {
   void topologyChanged() override { system_.patternStale = true; }
 
  private:
+  // The impulse each held vertex (integrator.h) received from its obstacle in the solve.
+  void reportReactions(const StepInputs& inputs);
+
   ImplicitSystem system_;
 };
 

@@ -75,10 +75,13 @@ void World::step() {
     inputs.threads = std::max(1, w.scene.solver.threads);
     w.beginObstacles(inputs);
     if (w.contact->runs()) w.saveStartPositions();
+    w.contact->prescribeHeldVertices(w.cloths, w.obstacles, h);
     for (size_t c = 0; c < w.cloths.size(); ++c) {
       inputs.bending = w.bendingRuns(w.cloths[c]);
+      inputs.heldVertices = w.contact->heldVertices(static_cast<int>(c));
       w.integrators[c]->advance(w.cloths[c], inputs, w.profile, w.stats);
     }
+    w.contact->applyHeldReactions(w.cloths, w.obstacles, h);
     w.contact->resolve(w.cloths, w.startPositions, w.obstacles, h, w.profile);
     w.endObstacles();
   }

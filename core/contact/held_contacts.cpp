@@ -1,0 +1,137 @@
+#include "contact/held_contacts.h"
+
+#include <algorithm>
+#include <map>
+#include <tuple>
+
+#include <Eigen/Geometry>
+
+#include "collision/closest_points.h"
+#include "contact/obstacle.h"
+#include "sim/cloth.h"
+
+namespace weft {
+
+namespace {
+
+// A cloth point touching an obstacle at the end of the step, as weighted cloth vertices.
+struct Touch {
+  ContactSide cloth;
+  int obstacleBody = 0;
+  Vec3 normal = Vec3::Zero();  // out of the obstacle
+};
+
+// The pair's closest points at the end of the step when they are within reach, cloth side first.
+bool touchOf(const std::vector<ContactBody>& bodies, const PrimitivePair& pair, double reach, Touch& out) {
+  const std::vector<Vec3>& xa = *bodies[pair.bodyA].x1;
+  const std::vector<Vec3>& xb = *bodies[pair.bodyB].x1;
+  const bool clothIsA = bodies[pair.bodyA].isCloth();
+  ContactSide a, b;
+  Vec3 fromBToA;
+  double distance = 0.0;
+  if (pair.kind == PairKind::VertexFace) {
+    const auto& f = bodies[pair.bodyB].topology->triangles[pair.featureB];
+    const PointTriangleClosest c = closestPointOnTriangle(xa[pair.featureA], xb[f[0]], xb[f[1]], xb[f[2]]);
+    if (!(c.distance < reach)) return false;
+    a = vertexSide(pair.bodyA, pair.featureA);
+    b = faceSide(bodies, pair.bodyB, pair.featureB, c.weights);
+    distance = c.distance;
+    fromBToA = xa[pair.featureA] - c.point;
+    if (!(distance > 1e-9)) fromBToA = (xb[f[1]] - xb[f[0]]).cross(xb[f[2]] - xb[f[0]]);
+  } else {
+    const auto& ea = bodies[pair.bodyA].topology->edges[pair.featureA];
+    const auto& eb = bodies[pair.bodyB].topology->edges[pair.featureB];
+    const SegmentSegmentClosest c = closestSegmentSegment(xa[ea[0]], xa[ea[1]], xb[eb[0]], xb[eb[1]]);
+    if (!(c.distance < reach) || !(c.distance > 1e-9)) return false;
+    a = edgeSide(bodies, pair.bodyA, pair.featureA, c.s);
+    b = edgeSide(bodies, pair.bodyB, pair.featureB, c.t);
+    fromBToA = sidePosition(bodies, a, true) - sidePosition(bodies, b, true);
+  }
+  if (!(fromBToA.squaredNorm() > 0.0)) return false;
+  out.cloth = clothIsA ? a : b;
+  out.obstacleBody = clothIsA ? pair.bodyB : pair.bodyA;
+  out.normal = (clothIsA ? fromBToA : Vec3(-fromBToA)).normalized();
+  return true;
+}
+
+}  // namespace
+
+void HeldContacts::collect(std::vector<ContactBody>& bodies, const ContactPairing& dynamicPairing,
+                           const std::vector<int>& bodyToWorldIndex, double reach, CandidatePairs& scratch,
+                           std::vector<PrimitivePair>& pairs) {
+  contacts_.clear();
+  if (dynamicPairing.empty()) return;
+  // The end state as both start and end: proximity at the end of the step.
+  std::vector<const std::vector<Vec3>*> savedStart(bodies.size());
+  for (std::size_t b = 0; b < bodies.size(); ++b) {
+    savedStart[b] = bodies[b].swept.x0;
+    bodies[b].swept.x0 = bodies[b].x1;
+  }
+  findPrimitivePairs(bodies, dynamicPairing, reach, scratch, pairs);
+  for (std::size_t b = 0; b < bodies.size(); ++b) bodies[b].swept.x0 = savedStart[b];
+
+  // Every touching pair is one share of its obstacle's mass, split over the cloth vertices of its
+  // cloth side by their weights; a vertex sums the shares of all the pairs it is part of.
+  std::vector<int> touches(bodies.size(), 0);
+  std::map<std::tuple<int, int, int>, std::pair<double, Vec3>> perVertex;  // (cloth body, vertex, obstacle body) -> (weight, normal sum)
+  for (const PrimitivePair& pair : pairs) {
+    Touch touch;
+    if (!touchOf(bodies, pair, reach, touch)) continue;
+    ++touches[touch.obstacleBody];
+    const ContactBody& cloth = bodies[touch.cloth.body];
+    for (int k = 0; k < touch.cloth.count; ++k) {
+      const int v = touch.cloth.vertex[k];
+      if ((*cloth.inverseMass)[v] == 0.0 || touch.cloth.weight[k] <= 0.0) continue;  // pinned: its pin holds it
+      if (std::find(released_.begin(), released_.end(), std::make_pair(bodyToWorldIndex[touch.cloth.body], v)) !=
+          released_.end()) {
+        continue;
+      }
+      // (Eigen leaves a default-constructed vector uninitialized: start the sum at zero.)
+      auto& entry = perVertex.try_emplace({touch.cloth.body, v, touch.obstacleBody}, 0.0, Vec3::Zero()).first->second;
+      entry.first += touch.cloth.weight[k];
+      entry.second += touch.cloth.weight[k] * touch.normal;
+    }
+  }
+  for (const auto& [key, entry] : perVertex) {  // map order: deterministic
+    const auto [clothBody, vertex, obstacleBody] = key;
+    const Obstacle& obstacle = *bodies[obstacleBody].obstacle;
+    const Vec3 position = (*bodies[clothBody].x1)[vertex];
+    Contact contact;
+    contact.cloth = bodyToWorldIndex[clothBody];
+    contact.vertex = vertex;
+    contact.obstacle = bodyToWorldIndex[obstacleBody];
+    contact.massFraction = entry.first / touches[obstacleBody];
+    contact.bodyPoint = obstacle.end.toBody(position);
+    contact.bodyNormal = obstacle.end.orientation.conjugate() * entry.second.normalized();
+    contacts_.push_back(contact);
+  }
+  released_.clear();
+}
+
+void HeldContacts::prescribe(const std::vector<Cloth>& cloths, const std::vector<Obstacle>& obstacles, double h,
+                             std::vector<std::vector<HeldVertex>>& out) const {
+  out.assign(cloths.size(), {});
+  for (const Contact& c : contacts_) {
+    const Obstacle& obstacle = obstacles[c.obstacle];
+    HeldVertex held;
+    held.vertex = c.vertex;
+    held.velocity = (obstacle.end.toWorld(c.bodyPoint) - obstacle.start.toWorld(c.bodyPoint)) / h;
+    held.massShare = c.massFraction * obstacle.body.mass;
+    out[c.cloth].push_back(held);
+  }
+}
+
+void HeldContacts::applyReactions(const std::vector<Cloth>& cloths, std::vector<Obstacle>& obstacles,
+                                  const std::vector<std::vector<HeldVertex>>& held, double h) {
+  std::vector<std::size_t> next(cloths.size(), 0);
+  for (const Contact& c : contacts_) {
+    const HeldVertex& vertex = held[c.cloth][next[c.cloth]++];
+    Obstacle& obstacle = obstacles[c.obstacle];
+    const Vec3 normal = obstacle.start.orientation * c.bodyNormal;
+    // The obstacle should push the vertex out of its surface; a pull means the cloth is leaving.
+    if (vertex.reaction.dot(normal) < 0.0) released_.emplace_back(c.cloth, c.vertex);
+    applyObstacleImpulse(obstacle, -vertex.reaction, obstacle.start.toWorld(c.bodyPoint), h);
+  }
+}
+
+}  // namespace weft

@@ -1,0 +1,61 @@
+#pragma once
+// Two-way coupling between cloth and dynamic obstacles inside the implicit solve.
+//
+// Why: impulses after the solve (contact_passes.h) exchange only the momentum the cloth's vertices
+// carry, and an implicit step gives a light vertex on stiff cloth almost none: the solve moves it
+// to equilibrium instead of accelerating it. A ball resting on a sheet, or thrown into one, then
+// barely feels the cloth's tension and sinks or flies through it.
+//
+// So a cloth vertex that ended the previous step touching a dynamic obstacle carries, in the next
+// solve, a share of the obstacle's mass moving at the obstacle's velocity there
+// (integrator.h HeldVertex): the cloth's stiffness and the obstacle's inertia meet implicitly, as
+// if the body were split into point masses glued to the vertices it rests on, and the impulse each
+// vertex received is given back to the body with the opposite sign, at the touched point (so the
+// body also turns). Momentum is exchanged exactly; a light ball does not bounce off a stiff sheet
+// as it would if the body were treated as infinitely heavy within the solve. A vertex that the
+// body pulled rather than pushed (the cloth is leaving) is released for the next step. The contact
+// passes still run after the solve and keep everything apart.
+#include <vector>
+
+#include "contact/contact_body.h"
+#include "contact/contact_pairs.h"
+#include "integrate/integrator.h"
+
+namespace weft {
+
+struct Cloth;
+struct Obstacle;
+
+class HeldContacts {
+ public:
+  // After contact resolution: the cloth vertices within `reach` of a dynamic obstacle's surface at
+  // the end of the step (through any vertex-face or edge-edge pair), except those released by
+  // their last reaction. Every touching pair carries an equal share of the obstacle's mass, split
+  // over the pair's cloth vertices by their weights.
+  void collect(std::vector<ContactBody>& bodies, const ContactPairing& dynamicPairing,
+               const std::vector<int>& bodyToWorldIndex, double reach, CandidatePairs& scratch,
+               std::vector<PrimitivePair>& pairs);
+  // Before the integrators: each held vertex's share of its obstacle's mass and the obstacle's
+  // velocity there (from its pose now to its predicted end pose). `out` has one list per cloth.
+  void prescribe(const std::vector<Cloth>& cloths, const std::vector<Obstacle>& obstacles, double h,
+                 std::vector<std::vector<HeldVertex>>& out) const;
+  // After the integrators: the obstacles take the opposite of every reaction.
+  void applyReactions(const std::vector<Cloth>& cloths, std::vector<Obstacle>& obstacles,
+                      const std::vector<std::vector<HeldVertex>>& held, double h);
+
+  std::size_t size() const { return contacts_.size(); }
+
+ private:
+  struct Contact {
+    int cloth = 0;
+    int vertex = 0;
+    int obstacle = 0;
+    double massFraction = 0.0;       // of the obstacle's mass carried by this vertex
+    Vec3 bodyPoint = Vec3::Zero();   // the vertex's position in the obstacle's body frame
+    Vec3 bodyNormal = Vec3::Zero();  // outward surface normal there, body frame
+  };
+  std::vector<Contact> contacts_;
+  std::vector<std::pair<int, int>> released_;  // (cloth, vertex) pulled away in the last step
+};
+
+}  // namespace weft
