@@ -195,3 +195,54 @@ TEST(ContactScenes, ContactIsDeterministicAcrossThreadCounts) {
 
 }  // namespace
 }  // namespace weft
+
+namespace weft {
+namespace {
+
+bool taggedEdge(const Obstacle& tool, int a, int b) {
+  for (std::size_t e = 0; e < tool.topology.edges.size(); ++e) {
+    const auto& edge = tool.topology.edges[e];
+    if (((edge[0] == a && edge[1] == b) || (edge[0] == b && edge[1] == a))) return tool.sharpEdge[e] != 0;
+  }
+  return false;
+}
+
+TEST(ContactScenes, SharpToolHitsAreRecordedForCutting) {
+  World sword(loadScene(scenePath("sword-into-sheet"), {"cloths.0.mesh.grid.resolution=[24,24]"}));
+  long long records = 0;
+  int vertexHits = 0, edgeHits = 0;
+  for (int s = 0; s < 150 && records < 200; ++s) {
+    sword.step();
+    for (const SharpContactRecord& r : sword.sharpContacts()) {
+      ++records;
+      const Obstacle& tool = sword.obstacle(r.obstacle);
+      EXPECT_GE(r.time, 0.0);
+      EXPECT_LE(r.time, 1.0);
+      EXPECT_GT(r.normalSpeed, 0.0);
+      // A kinematic tool is infinitely heavy: the pair's effective mass is the cloth side's, at most
+      // a few vertex masses.
+      EXPECT_GT(r.effectiveMass, 0.0);
+      EXPECT_LT(r.effectiveMass, 0.01);
+      EXPECT_TRUE(r.point.allFinite());
+      if (r.kind == SharpContactRecord::Kind::ToolVertexClothFace) {
+        ++vertexHits;
+        EXPECT_TRUE(tool.sharpVertex[r.toolFeature[0]]);
+        EXPECT_LT(r.clothFeature[0], sword.cloth(0).triangleCount());
+      } else {
+        ++edgeHits;
+        EXPECT_TRUE(taggedEdge(tool, r.toolFeature[0], r.toolFeature[1]));
+      }
+    }
+  }
+  EXPECT_GT(vertexHits, 0) << "the tip never hit the cloth";
+  EXPECT_GT(edgeHits, 0) << "no blade edge hit the cloth";
+  EXPECT_EQ(sword.contactStats().sharpContacts, records);
+
+  World hammer(loadScene(scenePath("hammer-into-sheet"), {"cloths.0.mesh.grid.resolution=[24,24]"}));
+  for (int s = 0; s < 150; ++s) hammer.step();
+  EXPECT_GT(hammer.contactStats().ccdCollisions + hammer.contactStats().proximityImpulses, 0);
+  EXPECT_EQ(hammer.contactStats().sharpContacts, 0);  // nothing on a hammer is sharp
+}
+
+}  // namespace
+}  // namespace weft

@@ -1,0 +1,167 @@
+// The contact sections of a scene ("ground", "obstacles", "contact"): read as documented, and every
+// kind of bad input rejected with an InputError naming the file and the field — at load time for
+// the JSON, and when the World is built for a mesh or tag file that is wrong.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "contact/obstacle.h"
+#include "scene/scene_json.h"
+#include "sim/world.h"
+#include "util/input_error.h"
+
+namespace weft {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+class TempDir {
+ public:
+  TempDir() {
+    std::random_device seed;
+    path_ = fs::temp_directory_path() / ("weft_contact_json_test_" + std::to_string(seed()));
+    fs::create_directories(path_);
+  }
+  ~TempDir() {
+    std::error_code ignored;
+    fs::remove_all(path_, ignored);
+  }
+  fs::path write(const std::string& name, const std::string& contents) const {
+    const fs::path file = path_ / name;
+    fs::create_directories(file.parent_path());
+    std::ofstream(file) << contents;
+    return file;
+  }
+
+ private:
+  fs::path path_;
+};
+
+json sceneWithObstacle(const std::string& obstacle) {
+  json scene = json::parse(R"({"cloths": [{"mesh": {"grid": {}}, "material": "royal-target"}]})");
+  scene["obstacles"] = json::array({json::parse(obstacle)});
+  return scene;
+}
+
+TEST(ContactJson, ObstaclesGroundAndContactAreRead) {
+  TempDir dir;
+  json scene = sceneWithObstacle(R"({"name": "ball", "shape": {"sphere": {"radius": 0.2}},
+      "placement": {"translate": [1, 2, 3]}, "motion": {"dynamic": {"mass": 3, "velocity": [0, 0, -4]}}})");
+  scene["obstacles"].push_back(json::parse(R"({"name": "sword", "shape": {"mesh": {"path": "tools/sword.obj"}},
+      "motion": {"kinematic": {"keyframes": [{"t": 0, "translate": [0, 1, 0]}, {"t": 1, "translate": [0, 0, 0]}]}}})"));
+  scene["ground"] = json::parse(R"({"height": -0.5})");
+  scene["contact"] = json::parse(R"({"self": true, "thickness": 0.002, "ccd_iterations": 12})");
+  const Scene s = loadScene(dir.write("scene.json", scene.dump()));
+  ASSERT_EQ(s.obstacles.size(), 2u);
+  EXPECT_EQ(s.obstacles[0].shape.kind, ShapeKind::Sphere);
+  EXPECT_DOUBLE_EQ(s.obstacles[0].shape.radius, 0.2);
+  EXPECT_EQ(s.obstacles[0].motion, ObstacleMotion::Dynamic);
+  EXPECT_DOUBLE_EQ(s.obstacles[0].mass, 3.0);
+  EXPECT_EQ(s.obstacles[0].translate, Vec3(1, 2, 3));
+  EXPECT_EQ(s.obstacles[1].motion, ObstacleMotion::Kinematic);
+  EXPECT_EQ(s.obstacles[1].keyframes.size(), 2u);
+  EXPECT_EQ(s.obstacles[1].translate, Vec3(0, 1, 0));  // the pose at t = 0 comes from the first key
+  EXPECT_EQ(s.obstacles[1].shape.sharpTagsPath.filename(), "sword.sharp.json");  // found beside the mesh
+  EXPECT_TRUE(s.ground.enabled);
+  EXPECT_DOUBLE_EQ(s.ground.height, -0.5);
+  EXPECT_TRUE(s.contact.self);
+  EXPECT_DOUBLE_EQ(s.contact.thickness, 0.002);
+  EXPECT_EQ(s.contact.ccdIterations, 12);
+
+  // The world builds them: the dynamic ball turns about its centre of mass, the sword's tags are read.
+  const World world(s);
+  EXPECT_EQ(world.obstacleCount(), 2);
+  EXPECT_NEAR(world.obstacle(0).body.mass, 3.0, 1e-12);
+  EXPECT_TRUE(world.obstacle(0).body.state.position.isApprox(Vec3(1, 2, 3), 1e-9));
+  int sharpVertices = 0, sharpEdges = 0;
+  for (char c : world.obstacle(1).sharpVertex) sharpVertices += c;
+  for (char c : world.obstacle(1).sharpEdge) sharpEdges += c;
+  EXPECT_EQ(sharpVertices, 1);
+  EXPECT_GT(sharpEdges, 10);
+}
+
+struct BadObstacle {
+  std::string name;
+  std::string obstacle;  // the obstacle's JSON, or a patch for the whole scene when it starts with "scene:"
+  std::string field;     // expected InputError::field()
+  std::string mentions;  // a word the message must contain
+};
+std::ostream& operator<<(std::ostream& out, const BadObstacle& c) { return out << c.name; }
+
+class ContactJsonRejects : public ::testing::TestWithParam<BadObstacle> {};
+
+TEST_P(ContactJsonRejects, NamingTheFileAndTheField) {
+  const BadObstacle& c = GetParam();
+  TempDir dir;
+  dir.write("open.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  dir.write("tet.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 1 4 3\n");
+  dir.write("tet.sharp.json", R"({"sharp_edges": [[0, 7]]})");
+  json scene;
+  if (c.obstacle.rfind("scene:", 0) == 0) {
+    scene = sceneWithObstacle(R"({"shape": {"sphere": {"radius": 0.1}}})");
+    scene.merge_patch(json::parse(c.obstacle.substr(6)));
+  } else {
+    scene = sceneWithObstacle(c.obstacle);
+  }
+  const fs::path file = dir.write("bad-contact.json", scene.dump(2));
+  try {
+    const Scene s = loadScene(file);
+    const World world(s);  // mesh and tag files are read when the world is built
+    FAIL() << "accepted without an InputError";
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("bad-contact.json"), std::string::npos) << what;
+    EXPECT_EQ(e.field().rfind(c.field, 0), 0u) << "field " << e.field() << ", expected " << c.field << "; " << what;
+    EXPECT_NE(what.find(c.mentions), std::string::npos) << "expected '" << c.mentions << "' in: " << what;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    BadInput, ContactJsonRejects,
+    ::testing::Values(
+        BadObstacle{"MissingShape", R"({"name": "a"})", "/obstacles/0/shape", "missing"},
+        BadObstacle{"TwoShapes", R"({"shape": {"sphere": {"radius": 1}, "box": {"half_extents": [1, 1, 1]}}})",
+                    "/obstacles/0/shape", "exactly one"},
+        BadObstacle{"UnknownShape", R"({"shape": {"torus": {}}})", "/obstacles/0/shape/torus", "allowed keys"},
+        BadObstacle{"NegativeRadius", R"({"shape": {"sphere": {"radius": -1}}})", "/obstacles/0/shape/sphere/radius", "> 0"},
+        BadObstacle{"NaNRadius", R"({"shape": {"sphere": {"radius": "NaN"}}})", "/obstacles/0/shape/sphere/radius", "got"},
+        BadObstacle{"FlatBox", R"({"shape": {"box": {"half_extents": [1, 0, 1]}}})", "/obstacles/0/shape/box/half_extents",
+                    "> 0"},
+        BadObstacle{"MissingMeshFile", R"({"shape": {"mesh": {"path": "nowhere.obj"}}})", "/obstacles/0/shape/mesh/path",
+                    "nowhere.obj"},
+        BadObstacle{"OpenMesh", R"({"shape": {"mesh": {"path": "open.obj"}}})", "/obstacles/0/shape", "open.obj"},
+        BadObstacle{"TagNamesANonEdge", R"({"shape": {"mesh": {"path": "tet.obj"}}})", "/obstacles/0/shape",
+                    "tet.sharp.json"},
+        BadObstacle{"UnknownMotion", R"({"shape": {"sphere": {"radius": 1}}, "motion": "flying"})", "/obstacles/0/motion",
+                    "static"},
+        BadObstacle{"DynamicWithoutMass", R"({"shape": {"sphere": {"radius": 1}}, "motion": {"dynamic": {}}})",
+                    "/obstacles/0/motion/dynamic/mass", "missing"},
+        BadObstacle{"ZeroMass", R"({"shape": {"sphere": {"radius": 1}}, "motion": {"dynamic": {"mass": 0}}})",
+                    "/obstacles/0/motion/dynamic/mass", "> 0"},
+        BadObstacle{"KeysAndVelocity",
+                    R"({"shape": {"sphere": {"radius": 1}}, "motion": {"kinematic": {"keyframes": [{"t": 0, "translate": [0,0,0]}], "velocity": [1, 0, 0]}}})",
+                    "/obstacles/0/motion/kinematic", "not both"},
+        BadObstacle{"KeysNotIncreasing",
+                    R"({"shape": {"sphere": {"radius": 1}}, "motion": {"kinematic": {"keyframes": [{"t": 1, "translate": [0,0,0]}, {"t": 0.5, "translate": [0,0,0]}]}}})",
+                    "/obstacles/0/motion/kinematic/keyframes/1/t", "increasing"},
+        BadObstacle{"KeysAndPlacement",
+                    R"({"shape": {"sphere": {"radius": 1}}, "placement": {"translate": [0, 1, 0]}, "motion": {"kinematic": {"keyframes": [{"t": 0, "translate": [0,0,0]}]}}})",
+                    "/obstacles/0/placement", "keyframes"},
+        BadObstacle{"NegativeFriction", R"({"shape": {"sphere": {"radius": 1}}, "friction": -0.1})", "/obstacles/0/friction",
+                    ">= 0"},
+        BadObstacle{"UnsafeName", R"({"name": "../x", "shape": {"sphere": {"radius": 1}}})", "/obstacles/0/name", "letters"},
+        BadObstacle{"ZeroThickness", R"(scene:{"contact": {"thickness": 0}})", "/contact/thickness", "> 0"},
+        BadObstacle{"UnknownContactKey", R"(scene:{"contact": {"selfie": true}})", "/contact/selfie", "allowed keys"},
+        BadObstacle{"GroundHeightNaN", R"(scene:{"ground": {"height": "NaN"}})", "/ground/height", "got"},
+        BadObstacle{"CollisionStageNotBool", R"(scene:{"stages": {"collision": "yes"}})", "/stages/collision",
+                    "true or false"}),
+    [](const ::testing::TestParamInfo<BadObstacle>& info) { return info.param.name; });
+
+}  // namespace
+}  // namespace weft
