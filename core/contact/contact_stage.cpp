@@ -23,7 +23,7 @@ ContactStage::ContactStage(const Scene& scene) : spec_(scene.contact), ground_(s
       if (spec_.obstacles) {
         for (int o = 0; o < obstacleCount; ++o) {
           pairing_.between.emplace_back(c, clothCount + o);
-          if (scene.obstacles[o].motion == ObstacleMotion::Dynamic) dynamicPairing_.between.emplace_back(c, clothCount + o);
+          obstaclePairing_.between.emplace_back(c, clothCount + o);
         }
       }
       if (spec_.self) {
@@ -36,7 +36,8 @@ ContactStage::ContactStage(const Scene& scene) : spec_(scene.contact), ground_(s
   if (!groundRuns) ground_.enabled = false;
   runs_ = !pairing_.empty() || groundRuns;
   selfCollision_ = !pairing_.self.empty();
-  holdsVertices_ = !dynamicPairing_.empty() && scene.solver.integrator == IntegratorKind::LinearizedBackwardEuler;
+  holdsVertices_ = (!obstaclePairing_.empty() || ground_.enabled) &&
+                   scene.solver.integrator == IntegratorKind::LinearizedBackwardEuler;
   bodies_.resize(static_cast<std::size_t>(clothCount + obstacleCount));
   clothTopology_.resize(static_cast<std::size_t>(clothCount));
   clothInverseMass_.resize(static_cast<std::size_t>(clothCount));
@@ -102,7 +103,11 @@ void ContactStage::resolve(std::vector<Cloth>& cloths, const std::vector<std::ve
   PassCounts counts;
   {
     StageTimer timer(profile, "contact_proximity");
+    // Pass 1 looks at the start of the step only: boxes around the start positions (not swept over
+    // the step) grown by the thickness find every pair it needs, and about half as many others.
+    for (ContactBody& body : bodies_) body.swept.x1 = body.x0;
     findPrimitivePairs(bodies_, pairing_, spec_.thickness, scratch_, pairs_);
+    for (ContactBody& body : bodies_) body.swept.x1 = body.x1;
     runProximityPass(bodies_, pairs_, settings, counts);
   }
   bool resolved = false;
@@ -117,7 +122,8 @@ void ContactStage::resolve(std::vector<Cloth>& cloths, const std::vector<std::ve
   }
   if (holdsVertices_) {
     StageTimer timer(profile, "contact_held");
-    held_.collect(bodies_, dynamicPairing_, bodyToWorldIndex_, 2.0 * spec_.thickness, scratch_, pairs_);
+    held_.collect(bodies_, obstaclePairing_, ground_.enabled ? &ground_ : nullptr, bodyToWorldIndex_,
+                  2.0 * spec_.thickness, scratch_, pairs_);
   }
   ++stats_.steps;
   stats_.proximityImpulses += counts.proximityImpulses;

@@ -33,7 +33,7 @@ struct ContactStats {
   long long impactZones = 0;         // zones moved rigidly (summed over steps)
   long long unresolvedSteps = 0;     // steps where pass 3 hit its bound with collisions left
   long long sharpContacts = 0;       // sharp-tool records made
-  long long heldVertices = 0;        // cloth vertices held by dynamic obstacles in the solve (summed over steps)
+  long long heldVertices = 0;        // cloth vertices held by obstacles or the ground in the solve (summed over steps)
 };
 
 class ContactStage {
@@ -74,7 +74,7 @@ class ContactStage {
   std::vector<std::vector<double>> clothInverseMass_;
   std::vector<int> bodyToWorldIndex_;
   ContactPairing pairing_;
-  ContactPairing dynamicPairing_;  // cloths against dynamic obstacles (held contacts)
+  ContactPairing obstaclePairing_;  // cloths against obstacles (held contacts)
   bool holdsVertices_ = false;     // the integrator takes held vertices (linearized backward Euler)
   HeldContacts held_;
   std::vector<std::vector<HeldVertex>> heldVertices_;

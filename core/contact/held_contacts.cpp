@@ -56,18 +56,22 @@ bool touchOf(const std::vector<ContactBody>& bodies, const PrimitivePair& pair, 
 
 }  // namespace
 
-void HeldContacts::collect(std::vector<ContactBody>& bodies, const ContactPairing& dynamicPairing,
-                           const std::vector<int>& bodyToWorldIndex, double reach, CandidatePairs& scratch,
-                           std::vector<PrimitivePair>& pairs) {
+void HeldContacts::collect(std::vector<ContactBody>& bodies, const ContactPairing& obstaclePairing,
+                           const GroundSpec* ground, const std::vector<int>& bodyToWorldIndex, double reach,
+                           CandidatePairs& scratch, std::vector<PrimitivePair>& pairs) {
   contacts_.clear();
-  if (dynamicPairing.empty()) return;
+  if (ground != nullptr) collectGround(bodies, *ground, bodyToWorldIndex, reach);
+  if (obstaclePairing.empty()) {
+    released_.clear();
+    return;
+  }
   // The end state as both start and end: proximity at the end of the step.
   std::vector<const std::vector<Vec3>*> savedStart(bodies.size());
   for (std::size_t b = 0; b < bodies.size(); ++b) {
     savedStart[b] = bodies[b].swept.x0;
     bodies[b].swept.x0 = bodies[b].x1;
   }
-  findPrimitivePairs(bodies, dynamicPairing, reach, scratch, pairs);
+  findPrimitivePairs(bodies, obstaclePairing, reach, scratch, pairs);
   for (std::size_t b = 0; b < bodies.size(); ++b) bodies[b].swept.x0 = savedStart[b];
 
   // Every touching pair is one share of its obstacle's mass, split over the cloth vertices of its
@@ -100,6 +104,7 @@ void HeldContacts::collect(std::vector<ContactBody>& bodies, const ContactPairin
     contact.cloth = bodyToWorldIndex[clothBody];
     contact.vertex = vertex;
     contact.obstacle = bodyToWorldIndex[obstacleBody];
+    contact.sharesMass = obstacle.motion == ObstacleMotion::Dynamic;
     contact.massFraction = entry.first / touches[obstacleBody];
     contact.bodyPoint = obstacle.end.toBody(position);
     contact.bodyNormal = obstacle.end.orientation.conjugate() * entry.second.normalized();
@@ -108,15 +113,47 @@ void HeldContacts::collect(std::vector<ContactBody>& bodies, const ContactPairin
   released_.clear();
 }
 
+void HeldContacts::collectGround(const std::vector<ContactBody>& bodies, const GroundSpec& ground,
+                                 const std::vector<int>& bodyToWorldIndex, double reach) {
+  for (std::size_t b = 0; b < bodies.size(); ++b) {
+    const ContactBody& body = bodies[b];
+    if (!body.isCloth()) continue;
+    for (std::size_t i = 0; i < body.x1->size(); ++i) {
+      if ((*body.inverseMass)[i] == 0.0 || !((*body.x1)[i].y() - ground.height < reach)) continue;
+      const int cloth = bodyToWorldIndex[b];
+      const int vertex = static_cast<int>(i);
+      if (std::find(released_.begin(), released_.end(), std::make_pair(cloth, vertex)) != released_.end()) continue;
+      Contact contact;
+      contact.cloth = cloth;
+      contact.vertex = vertex;
+      contact.obstacle = kGround;
+      contact.bodyNormal = Vec3::UnitY();
+      contacts_.push_back(contact);
+    }
+  }
+}
+
 void HeldContacts::prescribe(const std::vector<Cloth>& cloths, const std::vector<Obstacle>& obstacles, double h,
                              std::vector<std::vector<HeldVertex>>& out) const {
   out.assign(cloths.size(), {});
   for (const Contact& c : contacts_) {
-    const Obstacle& obstacle = obstacles[c.obstacle];
     HeldVertex held;
     held.vertex = c.vertex;
+    if (c.obstacle == kGround) {
+      held.kind = HeldVertex::Kind::NormalSupport;
+      held.normal = Vec3::UnitY();
+      out[c.cloth].push_back(held);
+      continue;
+    }
+    const Obstacle& obstacle = obstacles[c.obstacle];
     held.velocity = (obstacle.end.toWorld(c.bodyPoint) - obstacle.start.toWorld(c.bodyPoint)) / h;
-    held.massShare = c.massFraction * obstacle.body.mass;
+    held.normal = obstacle.start.orientation * c.bodyNormal;
+    if (c.sharesMass) {
+      held.kind = HeldVertex::Kind::ShareMass;
+      held.massShare = c.massFraction * obstacle.body.mass;
+    } else {
+      held.kind = HeldVertex::Kind::NormalSupport;
+    }
     out[c.cloth].push_back(held);
   }
 }
@@ -126,10 +163,10 @@ void HeldContacts::applyReactions(const std::vector<Cloth>& cloths, std::vector<
   std::vector<std::size_t> next(cloths.size(), 0);
   for (const Contact& c : contacts_) {
     const HeldVertex& vertex = held[c.cloth][next[c.cloth]++];
-    Obstacle& obstacle = obstacles[c.obstacle];
-    const Vec3 normal = obstacle.start.orientation * c.bodyNormal;
     // The obstacle should push the vertex out of its surface; a pull means the cloth is leaving.
-    if (vertex.reaction.dot(normal) < 0.0) released_.emplace_back(c.cloth, c.vertex);
+    if (vertex.reaction.dot(vertex.normal) < 0.0) released_.emplace_back(c.cloth, c.vertex);
+    if (c.obstacle == kGround || !c.sharesMass) continue;  // infinitely heavy: nothing to push back
+    Obstacle& obstacle = obstacles[c.obstacle];
     applyObstacleImpulse(obstacle, -vertex.reaction, obstacle.start.toWorld(c.bodyPoint), h);
   }
 }

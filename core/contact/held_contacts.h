@@ -1,5 +1,17 @@
 #pragma once
-// Two-way coupling between cloth and dynamic obstacles inside the implicit solve.
+// Contact inside the implicit solve: cloth resting on obstacles and the ground, and two-way
+// coupling with dynamic obstacles.
+//
+// Supports: with a large step, the solve alone moves a cloth resting on a box or a ball as if the
+// obstacle were not there (into it), and the contact passes then stop only the vertices that
+// touch: the cloth ends stretched between stopped and falling vertices, and the next solve does
+// the same again, so a drape over a box corner keeps edges stretched several times over. So a
+// vertex that ended the previous step touching a static or kinematic obstacle or the ground is
+// held along the surface normal in the next solve (Baraff & Witkin 1998, §5.3 constrain such
+// vertices; a stiff normal penalty keeps our solver unchanged): it moves with the surface along
+// the normal and freely along it.
+//
+// Dynamic obstacles:
 //
 // Why: impulses after the solve (contact_passes.h) exchange only the momentum the cloth's vertices
 // carry, and an implicit step gives a light vertex on stiff cloth almost none: the solve moves it
@@ -20,6 +32,7 @@
 #include "contact/contact_body.h"
 #include "contact/contact_pairs.h"
 #include "integrate/integrator.h"
+#include "scene/contact_spec.h"
 
 namespace weft {
 
@@ -32,7 +45,7 @@ class HeldContacts {
   // the end of the step (through any vertex-face or edge-edge pair), except those released by
   // their last reaction. Every touching pair carries an equal share of the obstacle's mass, split
   // over the pair's cloth vertices by their weights.
-  void collect(std::vector<ContactBody>& bodies, const ContactPairing& dynamicPairing,
+  void collect(std::vector<ContactBody>& bodies, const ContactPairing& obstaclePairing, const GroundSpec* ground,
                const std::vector<int>& bodyToWorldIndex, double reach, CandidatePairs& scratch,
                std::vector<PrimitivePair>& pairs);
   // Before the integrators: each held vertex's share of its obstacle's mass and the obstacle's
@@ -46,14 +59,19 @@ class HeldContacts {
   std::size_t size() const { return contacts_.size(); }
 
  private:
+  static constexpr int kGround = -1;
   struct Contact {
     int cloth = 0;
     int vertex = 0;
-    int obstacle = 0;
+    int obstacle = 0;                // kGround for the ground plane
+    bool sharesMass = false;         // a dynamic obstacle (else a normal support)
     double massFraction = 0.0;       // of the obstacle's mass carried by this vertex
     Vec3 bodyPoint = Vec3::Zero();   // the vertex's position in the obstacle's body frame
     Vec3 bodyNormal = Vec3::Zero();  // outward surface normal there, body frame
   };
+  void collectGround(const std::vector<ContactBody>& bodies, const GroundSpec& ground,
+                     const std::vector<int>& bodyToWorldIndex, double reach);
+
   std::vector<Contact> contacts_;
   std::vector<std::pair<int, int>> released_;  // (cloth, vertex) pulled away in the last step
 };

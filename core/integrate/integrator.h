@@ -17,15 +17,23 @@ namespace weft {
 struct Cloth;
 struct SolverStats;
 
-// A cloth vertex resting on a dynamic obstacle (contact/held_contacts.h). In this step's implicit
-// solve the vertex carries a share of the obstacle's mass moving at the obstacle's velocity there:
-// its row of the system gains (m_share) v = m_share * velocity, so the cloth's stiffness and the
-// obstacle's inertia meet inside the solve. The impulse the vertex received that way is reported
-// back; the obstacle takes its opposite (momentum is exchanged exactly).
+// A cloth vertex resting on an obstacle or the ground (contact/held_contacts.h), held in this
+// step's implicit solve so that contact and the cloth's stiffness meet inside it:
+//  - ShareMass (a dynamic obstacle): the vertex carries `massShare` kg of the obstacle moving at
+//    its velocity there; its row gains massShare (v - velocity).
+//  - NormalSupport (a static or kinematic obstacle, the ground): along `normal` only, the vertex is
+//    made much heavier than anything around it (a penalty of kNormalSupportWeight times its
+//    diagonal entry) moving at the support's velocity; it slides freely along the surface.
+// The impulse the vertex received that way is reported back as the reaction (the obstacle takes
+// its opposite when it is dynamic).
 struct HeldVertex {
+  enum class Kind { ShareMass, NormalSupport };
+  static constexpr double kNormalSupportWeight = 100.0;
+  Kind kind = Kind::ShareMass;
   int vertex = 0;
   Vec3 velocity = Vec3::Zero();  // the obstacle's velocity at the vertex (m/s)
-  double massShare = 0.0;        // kg
+  Vec3 normal = Vec3::UnitY();   // out of the obstacle (NormalSupport)
+  double massShare = 0.0;        // kg (ShareMass; set by the integrator for NormalSupport)
   Vec3 reaction = Vec3::Zero();  // out: impulse the vertex received from the obstacle (N s)
 };
 

@@ -1,5 +1,7 @@
 #include "integrate/linearized_backward_euler.h"
 
+#include <algorithm>
+
 #include "sim/cloth.h"
 #include "sim/world.h"
 
@@ -32,11 +34,12 @@ void LinearizedBackwardEuler::advance(Cloth& cloth, const StepInputs& in, StageP
     const auto fExt = flat(system_.externalForce);
     for (int i = 0; i < n; ++i)
       system_.rhs.segment<3>(3 * i) = mesh.mass[i] * v.segment<3>(3 * i) + h * (fInt.segment<3>(3 * i) + fExt.segment<3>(3 * i));
-    // A vertex resting on a dynamic obstacle carries a share of its mass (integrator.h HeldVertex).
+    // Vertices resting on obstacles are held (integrator.h HeldVertex).
     if (in.heldVertices != nullptr) {
-      for (const HeldVertex& held : *in.heldVertices) {
-        system_.matrix.addDiagonal(held.vertex, held.massShare);
-        system_.rhs.segment<3>(3 * held.vertex) += held.massShare * held.velocity;
+      for (HeldVertex& held : *in.heldVertices) {
+        const Mat3 weight = holdWeight(held);
+        system_.matrix.addBlock(held.vertex, held.vertex, weight);
+        system_.rhs.segment<3>(3 * held.vertex) += weight * held.velocity;
       }
     }
     // Pinned vertices move at the velocity that takes them to their scripted target.
@@ -61,10 +64,21 @@ void LinearizedBackwardEuler::advance(Cloth& cloth, const StepInputs& in, StageP
   for (size_t k = 0; k < system_.pinnedVertices.size(); ++k) mesh.x[system_.pinnedVertices[k]] = system_.pinnedTargets[k];
 }
 
+Mat3 LinearizedBackwardEuler::holdWeight(HeldVertex& held) const {
+  if (held.kind == HeldVertex::Kind::ShareMass) return held.massShare * Mat3::Identity();
+  if (held.massShare == 0.0) {  // first use this step: scaled to the vertex's assembled diagonal
+    const SystemMatrix::Sparse& A = system_.matrix.matrix();
+    const double diagonal = std::max({A.coeff(3 * held.vertex, 3 * held.vertex), A.coeff(3 * held.vertex + 1, 3 * held.vertex + 1),
+                         A.coeff(3 * held.vertex + 2, 3 * held.vertex + 2)});
+    held.massShare = HeldVertex::kNormalSupportWeight * diagonal;
+  }
+  return held.massShare * held.normal * held.normal.transpose();
+}
+
 void LinearizedBackwardEuler::reportReactions(const StepInputs& in) {
   if (in.heldVertices == nullptr) return;
   for (HeldVertex& held : *in.heldVertices) {
-    held.reaction = held.massShare * (held.velocity - system_.solution.segment<3>(3 * held.vertex));
+    held.reaction = holdWeight(held) * (held.velocity - system_.solution.segment<3>(3 * held.vertex));
   }
 }
 

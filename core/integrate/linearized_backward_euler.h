@@ -14,6 +14,8 @@ class LinearizedBackwardEuler final : public Integrator {
  private:
   // The impulse each held vertex (integrator.h) received from its obstacle in the solve.
   void reportReactions(const StepInputs& inputs);
+  // The 3x3 weight a held vertex adds to its diagonal block (integrator.h HeldVertex).
+  Mat3 holdWeight(HeldVertex& held) const;
 
   ImplicitSystem system_;
 };
