@@ -103,12 +103,7 @@ void ContactStage::resolve(std::vector<Cloth>& cloths, const std::vector<std::ve
   PassCounts counts;
   {
     StageTimer timer(profile, "contact_proximity");
-    // Pass 1 looks at the start of the step only: boxes around the start positions (not swept over
-    // the step) grown by the thickness find every pair it needs, and about half as many others.
-    for (ContactBody& body : bodies_) body.swept.x1 = body.x0;
-    findPrimitivePairs(bodies_, pairing_, spec_.thickness, scratch_, pairs_);
-    for (ContactBody& body : bodies_) body.swept.x1 = body.x1;
-    runProximityPass(bodies_, pairs_, settings, counts);
+    runProximityPass(bodies_, startPairs_, settings, counts);
   }
   bool resolved = false;
   {
@@ -119,11 +114,6 @@ void ContactStage::resolve(std::vector<Cloth>& cloths, const std::vector<std::ve
     StageTimer timer(profile, "contact_impact_zones");
     ++stats_.impactZoneSteps;
     runImpactZonePass(bodies_, pairing_, settings, scratch_, pairs_, counts);
-  }
-  if (holdsVertices_) {
-    StageTimer timer(profile, "contact_held");
-    held_.collect(bodies_, obstaclePairing_, ground_.enabled ? &ground_ : nullptr, bodyToWorldIndex_,
-                  2.0 * spec_.thickness, scratch_, pairs_);
   }
   ++stats_.steps;
   stats_.proximityImpulses += counts.proximityImpulses;
@@ -136,9 +126,21 @@ void ContactStage::resolve(std::vector<Cloth>& cloths, const std::vector<std::ve
   stats_.sharpContacts += static_cast<long long>(records_.size());
 }
 
-void ContactStage::prescribeHeldVertices(const std::vector<Cloth>& cloths, const std::vector<Obstacle>& obstacles,
-                                         double h) {
+void ContactStage::prepare(std::vector<Cloth>& cloths, const std::vector<std::vector<Vec3>>& startPositions,
+                           std::vector<Obstacle>& obstacles, double h, StageProfile& profile) {
+  if (!runs_) return;
+  refreshBodies(cloths, startPositions, obstacles);
+  {
+    // Pass 1 and the held vertices look at the start of the step only: boxes around the start
+    // positions (not swept over the step) grown by the reach find every pair both need.
+    StageTimer timer(profile, "contact_start_pairs");
+    for (ContactBody& body : bodies_) body.swept.x1 = body.x0;
+    findPrimitivePairs(bodies_, pairing_, holdReach(), scratch_, startPairs_);
+    for (ContactBody& body : bodies_) body.swept.x1 = body.x1;
+  }
   if (!holdsVertices_) return;
+  StageTimer timer(profile, "contact_held");
+  held_.collect(bodies_, startPairs_, ground_.enabled ? &ground_ : nullptr, bodyToWorldIndex_, holdReach());
   held_.prescribe(cloths, obstacles, h, heldVertices_);
   stats_.heldVertices += static_cast<long long>(held_.size());
 }

@@ -49,10 +49,13 @@ class ContactStage {
   void resolve(std::vector<Cloth>& cloths, const std::vector<std::vector<Vec3>>& startPositions,
                std::vector<Obstacle>& obstacles, double h, StageProfile& profile);
 
-  // Two-way coupling with dynamic obstacles inside the solve (held_contacts.h): before the
-  // integrators, the velocities of the cloth vertices resting on a dynamic obstacle; after them,
-  // the reactions to the obstacles. heldVertices(c) is null when cloth c holds none.
-  void prescribeHeldVertices(const std::vector<Cloth>& cloths, const std::vector<Obstacle>& obstacles, double h);
+  // Before the integrators (each cloth's mesh still at its start positions, obstacles begun): the
+  // primitive pairs near each other at the start of the step (pass 1 uses them after the solve),
+  // and the cloth vertices held in the solve by what they rest on (held_contacts.h).
+  // heldVertices(c) is null when cloth c holds none; after the integrators, applyHeldReactions
+  // gives dynamic obstacles the opposite of what they gave the cloth.
+  void prepare(std::vector<Cloth>& cloths, const std::vector<std::vector<Vec3>>& startPositions,
+               std::vector<Obstacle>& obstacles, double h, StageProfile& profile);
   std::vector<HeldVertex>* heldVertices(int cloth);
   void applyHeldReactions(const std::vector<Cloth>& cloths, std::vector<Obstacle>& obstacles, double h);
 
@@ -80,6 +83,8 @@ class ContactStage {
   std::vector<std::vector<HeldVertex>> heldVertices_;
   CandidatePairs scratch_;
   std::vector<PrimitivePair> pairs_;
+  std::vector<PrimitivePair> startPairs_;  // pairs near each other at the start of the step
+  double holdReach() const { return 2.0 * spec_.thickness; }
   ContactStats stats_;
   std::vector<SharpContactRecord> records_;
 };

@@ -21,10 +21,10 @@ struct Touch {
   Vec3 normal = Vec3::Zero();  // out of the obstacle
 };
 
-// The pair's closest points at the end of the step when they are within reach, cloth side first.
+// The pair's closest points at the start of the step when they are within reach, cloth side first.
 bool touchOf(const std::vector<ContactBody>& bodies, const PrimitivePair& pair, double reach, Touch& out) {
-  const std::vector<Vec3>& xa = *bodies[pair.bodyA].x1;
-  const std::vector<Vec3>& xb = *bodies[pair.bodyB].x1;
+  const std::vector<Vec3>& xa = *bodies[pair.bodyA].x0;
+  const std::vector<Vec3>& xb = *bodies[pair.bodyB].x0;
   const bool clothIsA = bodies[pair.bodyA].isCloth();
   ContactSide a, b;
   Vec3 fromBToA;
@@ -45,7 +45,7 @@ bool touchOf(const std::vector<ContactBody>& bodies, const PrimitivePair& pair, 
     if (!(c.distance < reach) || !(c.distance > 1e-9)) return false;
     a = edgeSide(bodies, pair.bodyA, pair.featureA, c.s);
     b = edgeSide(bodies, pair.bodyB, pair.featureB, c.t);
-    fromBToA = sidePosition(bodies, a, true) - sidePosition(bodies, b, true);
+    fromBToA = sidePosition(bodies, a, false) - sidePosition(bodies, b, false);
   }
   if (!(fromBToA.squaredNorm() > 0.0)) return false;
   out.cloth = clothIsA ? a : b;
@@ -56,29 +56,17 @@ bool touchOf(const std::vector<ContactBody>& bodies, const PrimitivePair& pair, 
 
 }  // namespace
 
-void HeldContacts::collect(std::vector<ContactBody>& bodies, const ContactPairing& obstaclePairing,
-                           const GroundSpec* ground, const std::vector<int>& bodyToWorldIndex, double reach,
-                           CandidatePairs& scratch, std::vector<PrimitivePair>& pairs) {
+void HeldContacts::collect(const std::vector<ContactBody>& bodies, const std::vector<PrimitivePair>& pairs,
+                           const GroundSpec* ground, const std::vector<int>& bodyToWorldIndex, double reach) {
   contacts_.clear();
   if (ground != nullptr) collectGround(bodies, *ground, bodyToWorldIndex, reach);
-  if (obstaclePairing.empty()) {
-    released_.clear();
-    return;
-  }
-  // The end state as both start and end: proximity at the end of the step.
-  std::vector<const std::vector<Vec3>*> savedStart(bodies.size());
-  for (std::size_t b = 0; b < bodies.size(); ++b) {
-    savedStart[b] = bodies[b].swept.x0;
-    bodies[b].swept.x0 = bodies[b].x1;
-  }
-  findPrimitivePairs(bodies, obstaclePairing, reach, scratch, pairs);
-  for (std::size_t b = 0; b < bodies.size(); ++b) bodies[b].swept.x0 = savedStart[b];
 
   // Every touching pair is one share of its obstacle's mass, split over the cloth vertices of its
   // cloth side by their weights; a vertex sums the shares of all the pairs it is part of.
   std::vector<int> touches(bodies.size(), 0);
   std::map<std::tuple<int, int, int>, std::pair<double, Vec3>> perVertex;  // (cloth body, vertex, obstacle body) -> (weight, normal sum)
   for (const PrimitivePair& pair : pairs) {
+    if (bodies[pair.bodyA].isCloth() == bodies[pair.bodyB].isCloth()) continue;  // cloth on cloth: not held
     Touch touch;
     if (!touchOf(bodies, pair, reach, touch)) continue;
     ++touches[touch.obstacleBody];
@@ -99,15 +87,15 @@ void HeldContacts::collect(std::vector<ContactBody>& bodies, const ContactPairin
   for (const auto& [key, entry] : perVertex) {  // map order: deterministic
     const auto [clothBody, vertex, obstacleBody] = key;
     const Obstacle& obstacle = *bodies[obstacleBody].obstacle;
-    const Vec3 position = (*bodies[clothBody].x1)[vertex];
+    const Vec3 position = (*bodies[clothBody].x0)[vertex];
     Contact contact;
     contact.cloth = bodyToWorldIndex[clothBody];
     contact.vertex = vertex;
     contact.obstacle = bodyToWorldIndex[obstacleBody];
     contact.sharesMass = obstacle.motion == ObstacleMotion::Dynamic;
     contact.massFraction = entry.first / touches[obstacleBody];
-    contact.bodyPoint = obstacle.end.toBody(position);
-    contact.bodyNormal = obstacle.end.orientation.conjugate() * entry.second.normalized();
+    contact.bodyPoint = obstacle.start.toBody(position);
+    contact.bodyNormal = obstacle.start.orientation.conjugate() * entry.second.normalized();
     contacts_.push_back(contact);
   }
   released_.clear();
@@ -118,8 +106,8 @@ void HeldContacts::collectGround(const std::vector<ContactBody>& bodies, const G
   for (std::size_t b = 0; b < bodies.size(); ++b) {
     const ContactBody& body = bodies[b];
     if (!body.isCloth()) continue;
-    for (std::size_t i = 0; i < body.x1->size(); ++i) {
-      if ((*body.inverseMass)[i] == 0.0 || !((*body.x1)[i].y() - ground.height < reach)) continue;
+    for (std::size_t i = 0; i < body.x0->size(); ++i) {
+      if ((*body.inverseMass)[i] == 0.0 || !((*body.x0)[i].y() - ground.height < reach)) continue;
       const int cloth = bodyToWorldIndex[b];
       const int vertex = static_cast<int>(i);
       if (std::find(released_.begin(), released_.end(), std::make_pair(cloth, vertex)) != released_.end()) continue;

@@ -6,8 +6,8 @@
 // obstacle were not there (into it), and the contact passes then stop only the vertices that
 // touch: the cloth ends stretched between stopped and falling vertices, and the next solve does
 // the same again, so a drape over a box corner keeps edges stretched several times over. So a
-// vertex that ended the previous step touching a static or kinematic obstacle or the ground is
-// held along the surface normal in the next solve (Baraff & Witkin 1998, §5.3 constrain such
+// vertex that starts the step touching a static or kinematic obstacle or the ground is held
+// along the surface normal in the solve (Baraff & Witkin 1998, §5.3 constrain such
 // vertices; a stiff normal penalty keeps our solver unchanged): it moves with the surface along
 // the normal and freely along it.
 //
@@ -41,13 +41,13 @@ struct Obstacle;
 
 class HeldContacts {
  public:
-  // After contact resolution: the cloth vertices within `reach` of a dynamic obstacle's surface at
-  // the end of the step (through any vertex-face or edge-edge pair), except those released by
-  // their last reaction. Every touching pair carries an equal share of the obstacle's mass, split
-  // over the pair's cloth vertices by their weights.
-  void collect(std::vector<ContactBody>& bodies, const ContactPairing& obstaclePairing, const GroundSpec* ground,
-               const std::vector<int>& bodyToWorldIndex, double reach, CandidatePairs& scratch,
-               std::vector<PrimitivePair>& pairs);
+  // At the start of a step: the cloth vertices within `reach` of an obstacle's surface or the
+  // ground, from primitive pairs found at the start positions with a margin of at least `reach`
+  // (through any vertex-face or edge-edge pair), except those released by their last reaction.
+  // For a dynamic obstacle every touching pair carries an equal share of its mass, split over the
+  // pair's cloth vertices by their weights.
+  void collect(const std::vector<ContactBody>& bodies, const std::vector<PrimitivePair>& pairs, const GroundSpec* ground,
+               const std::vector<int>& bodyToWorldIndex, double reach);
   // Before the integrators: each held vertex's share of its obstacle's mass and the obstacle's
   // velocity there (from its pose now to its predicted end pose). `out` has one list per cloth.
   void prescribe(const std::vector<Cloth>& cloths, const std::vector<Obstacle>& obstacles, double h,

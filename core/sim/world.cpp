@@ -75,7 +75,7 @@ void World::step() {
     inputs.threads = std::max(1, w.scene.solver.threads);
     w.beginObstacles(inputs);
     if (w.contact->runs()) w.saveStartPositions();
-    w.contact->prescribeHeldVertices(w.cloths, w.obstacles, h);
+    w.contact->prepare(w.cloths, w.startPositions, w.obstacles, h, w.profile);
     for (size_t c = 0; c < w.cloths.size(); ++c) {
       inputs.bending = w.bendingRuns(w.cloths[c]);
       inputs.heldVertices = w.contact->heldVertices(static_cast<int>(c));
@@ -126,6 +126,8 @@ std::vector<std::string> World::stagesRun() const {
   stages.push_back("update");
   if (!w.obstacles.empty()) stages.push_back("obstacles");
   if (w.contact->runs()) {
+    stages.push_back("contact_start_pairs");
+    stages.push_back("contact_held");  // when the integrator holds vertices (linearized backward Euler)
     stages.push_back("contact_proximity");
     stages.push_back("contact_ccd");
     stages.push_back("contact_impact_zones");  // only when pass 2 leaves collisions
