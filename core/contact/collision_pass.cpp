@@ -50,6 +50,9 @@ namespace {
 
 void recordIfSharp(const std::vector<ContactBody>& bodies, const Collision& c, const ImpulseResult& impulse,
                    const std::vector<int>& bodyToWorldIndex, std::vector<SharpContactRecord>& records) {
+  // Only an impact counts: a pair already separating, pushed a little further apart so it ends the
+  // step clear, is not a blow that could cut.
+  if (!(impulse.normalVelocityBefore < 0.0)) return;
   const PrimitivePair& p = c.pair;
   const ContactBody& A = bodies[p.bodyA];
   const ContactBody& B = bodies[p.bodyB];

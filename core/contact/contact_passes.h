@@ -13,6 +13,7 @@
 #include "collision/candidate_pairs.h"
 #include "contact/contact_body.h"
 #include "contact/contact_pairs.h"
+#include "contact/near_pairs.h"
 #include "scene/contact_spec.h"
 
 namespace weft {
@@ -49,8 +50,9 @@ struct PassCounts {
   bool unresolved = false;  // pass 3 hit its bound with collisions left
 };
 
-// Pass 1. `pairs` must come from findPrimitivePairs with margin >= thickness.
-void runProximityPass(std::vector<ContactBody>& bodies, const std::vector<PrimitivePair>& pairs,
+// Pass 1, on the pairs near each other at the start of the step (measured with a reach of at
+// least the thickness).
+void runProximityPass(std::vector<ContactBody>& bodies, const std::vector<NearPair>& nearPairs,
                       const ContactStepSettings& settings, PassCounts& counts);
 
 // Pass 2. Returns true when the last iteration found no collision.

@@ -103,7 +103,7 @@ void ContactStage::resolve(std::vector<Cloth>& cloths, const std::vector<std::ve
   PassCounts counts;
   {
     StageTimer timer(profile, "contact_proximity");
-    runProximityPass(bodies_, startPairs_, settings, counts);
+    runProximityPass(bodies_, nearPairs_, settings, counts);
   }
   bool resolved = false;
   {
@@ -137,10 +137,11 @@ void ContactStage::prepare(std::vector<Cloth>& cloths, const std::vector<std::ve
     for (ContactBody& body : bodies_) body.swept.x1 = body.x0;
     findPrimitivePairs(bodies_, pairing_, holdReach(), scratch_, startPairs_);
     for (ContactBody& body : bodies_) body.swept.x1 = body.x1;
+    measureNearPairs(bodies_, startPairs_, holdReach(), nearPairs_);
   }
   if (!holdsVertices_) return;
   StageTimer timer(profile, "contact_held");
-  held_.collect(bodies_, startPairs_, ground_.enabled ? &ground_ : nullptr, bodyToWorldIndex_, holdReach());
+  held_.collect(bodies_, nearPairs_, ground_.enabled ? &ground_ : nullptr, bodyToWorldIndex_, holdReach());
   held_.prescribe(cloths, obstacles, h, heldVertices_);
   stats_.heldVertices += static_cast<long long>(held_.size());
 }

@@ -83,7 +83,8 @@ class ContactStage {
   std::vector<std::vector<HeldVertex>> heldVertices_;
   CandidatePairs scratch_;
   std::vector<PrimitivePair> pairs_;
-  std::vector<PrimitivePair> startPairs_;  // pairs near each other at the start of the step
+  std::vector<PrimitivePair> startPairs_;  // candidate pairs at the start of the step
+  std::vector<NearPair> nearPairs_;         // those within the reach, measured
   double holdReach() const { return 2.0 * spec_.thickness; }
   ContactStats stats_;
   std::vector<SharpContactRecord> records_;

@@ -6,57 +6,12 @@
 
 #include <Eigen/Geometry>
 
-#include "collision/closest_points.h"
 #include "contact/obstacle.h"
 #include "sim/cloth.h"
 
 namespace weft {
 
-namespace {
-
-// A cloth point touching an obstacle at the end of the step, as weighted cloth vertices.
-struct Touch {
-  ContactSide cloth;
-  int obstacleBody = 0;
-  Vec3 normal = Vec3::Zero();  // out of the obstacle
-};
-
-// The pair's closest points at the start of the step when they are within reach, cloth side first.
-bool touchOf(const std::vector<ContactBody>& bodies, const PrimitivePair& pair, double reach, Touch& out) {
-  const std::vector<Vec3>& xa = *bodies[pair.bodyA].x0;
-  const std::vector<Vec3>& xb = *bodies[pair.bodyB].x0;
-  const bool clothIsA = bodies[pair.bodyA].isCloth();
-  ContactSide a, b;
-  Vec3 fromBToA;
-  double distance = 0.0;
-  if (pair.kind == PairKind::VertexFace) {
-    const auto& f = bodies[pair.bodyB].topology->triangles[pair.featureB];
-    const PointTriangleClosest c = closestPointOnTriangle(xa[pair.featureA], xb[f[0]], xb[f[1]], xb[f[2]]);
-    if (!(c.distance < reach)) return false;
-    a = vertexSide(pair.bodyA, pair.featureA);
-    b = faceSide(bodies, pair.bodyB, pair.featureB, c.weights);
-    distance = c.distance;
-    fromBToA = xa[pair.featureA] - c.point;
-    if (!(distance > 1e-9)) fromBToA = (xb[f[1]] - xb[f[0]]).cross(xb[f[2]] - xb[f[0]]);
-  } else {
-    const auto& ea = bodies[pair.bodyA].topology->edges[pair.featureA];
-    const auto& eb = bodies[pair.bodyB].topology->edges[pair.featureB];
-    const SegmentSegmentClosest c = closestSegmentSegment(xa[ea[0]], xa[ea[1]], xb[eb[0]], xb[eb[1]]);
-    if (!(c.distance < reach) || !(c.distance > 1e-9)) return false;
-    a = edgeSide(bodies, pair.bodyA, pair.featureA, c.s);
-    b = edgeSide(bodies, pair.bodyB, pair.featureB, c.t);
-    fromBToA = sidePosition(bodies, a, false) - sidePosition(bodies, b, false);
-  }
-  if (!(fromBToA.squaredNorm() > 0.0)) return false;
-  out.cloth = clothIsA ? a : b;
-  out.obstacleBody = clothIsA ? pair.bodyB : pair.bodyA;
-  out.normal = (clothIsA ? fromBToA : Vec3(-fromBToA)).normalized();
-  return true;
-}
-
-}  // namespace
-
-void HeldContacts::collect(const std::vector<ContactBody>& bodies, const std::vector<PrimitivePair>& pairs,
+void HeldContacts::collect(const std::vector<ContactBody>& bodies, const std::vector<NearPair>& nearPairs,
                            const GroundSpec* ground, const std::vector<int>& bodyToWorldIndex, double reach) {
   contacts_.clear();
   if (ground != nullptr) collectGround(bodies, *ground, bodyToWorldIndex, reach);
@@ -65,23 +20,29 @@ void HeldContacts::collect(const std::vector<ContactBody>& bodies, const std::ve
   // cloth side by their weights; a vertex sums the shares of all the pairs it is part of.
   std::vector<int> touches(bodies.size(), 0);
   std::map<std::tuple<int, int, int>, std::pair<double, Vec3>> perVertex;  // (cloth body, vertex, obstacle body) -> (weight, normal sum)
-  for (const PrimitivePair& pair : pairs) {
-    if (bodies[pair.bodyA].isCloth() == bodies[pair.bodyB].isCloth()) continue;  // cloth on cloth: not held
-    Touch touch;
-    if (!touchOf(bodies, pair, reach, touch)) continue;
-    ++touches[touch.obstacleBody];
-    const ContactBody& cloth = bodies[touch.cloth.body];
-    for (int k = 0; k < touch.cloth.count; ++k) {
-      const int v = touch.cloth.vertex[k];
-      if ((*cloth.inverseMass)[v] == 0.0 || touch.cloth.weight[k] <= 0.0) continue;  // pinned: its pin holds it
-      if (std::find(released_.begin(), released_.end(), std::make_pair(bodyToWorldIndex[touch.cloth.body], v)) !=
+  for (const NearPair& near : nearPairs) {
+    const bool clothIsA = bodies[near.pair.bodyA].isCloth();
+    if (clothIsA == bodies[near.pair.bodyB].isCloth() || !(near.distance < reach)) continue;  // cloth on cloth: not held
+    const ContactSide& clothSide = clothIsA ? near.a : near.b;
+    const int obstacleBody = clothIsA ? near.pair.bodyB : near.pair.bodyA;
+    Vec3 normal = clothIsA ? near.normal : Vec3(-near.normal);  // out of the obstacle
+    if (near.touching) {  // no reliable direction: take the side the cloth is on relative to the body's centre
+      const Vec3 centre = bodies[obstacleBody].obstacle->start.position;
+      if (normal.dot(sidePosition(bodies, clothSide, false) - centre) < 0.0) normal = -normal;
+    }
+    ++touches[obstacleBody];
+    const ContactBody& cloth = bodies[clothSide.body];
+    for (int k = 0; k < clothSide.count; ++k) {
+      const int v = clothSide.vertex[k];
+      if ((*cloth.inverseMass)[v] == 0.0 || clothSide.weight[k] <= 0.0) continue;  // pinned: its pin holds it
+      if (std::find(released_.begin(), released_.end(), std::make_pair(bodyToWorldIndex[clothSide.body], v)) !=
           released_.end()) {
         continue;
       }
       // (Eigen leaves a default-constructed vector uninitialized: start the sum at zero.)
-      auto& entry = perVertex.try_emplace({touch.cloth.body, v, touch.obstacleBody}, 0.0, Vec3::Zero()).first->second;
-      entry.first += touch.cloth.weight[k];
-      entry.second += touch.cloth.weight[k] * touch.normal;
+      auto& entry = perVertex.try_emplace({clothSide.body, v, obstacleBody}, 0.0, Vec3::Zero()).first->second;
+      entry.first += clothSide.weight[k];
+      entry.second += clothSide.weight[k] * normal;
     }
   }
   for (const auto& [key, entry] : perVertex) {  // map order: deterministic

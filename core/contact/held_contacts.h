@@ -31,6 +31,7 @@
 
 #include "contact/contact_body.h"
 #include "contact/contact_pairs.h"
+#include "contact/near_pairs.h"
 #include "integrate/integrator.h"
 #include "scene/contact_spec.h"
 
@@ -42,11 +43,11 @@ struct Obstacle;
 class HeldContacts {
  public:
   // At the start of a step: the cloth vertices within `reach` of an obstacle's surface or the
-  // ground, from primitive pairs found at the start positions with a margin of at least `reach`
-  // (through any vertex-face or edge-edge pair), except those released by their last reaction.
+  // ground, from the pairs near each other at the start (near_pairs.h, any vertex-face or
+  // edge-edge pair), except those released by their last reaction.
   // For a dynamic obstacle every touching pair carries an equal share of its mass, split over the
   // pair's cloth vertices by their weights.
-  void collect(const std::vector<ContactBody>& bodies, const std::vector<PrimitivePair>& pairs, const GroundSpec* ground,
+  void collect(const std::vector<ContactBody>& bodies, const std::vector<NearPair>& nearPairs, const GroundSpec* ground,
                const std::vector<int>& bodyToWorldIndex, double reach);
   // Before the integrators: each held vertex's share of its obstacle's mass and the obstacle's
   // velocity there (from its pose now to its predicted end pose). `out` has one list per cloth.

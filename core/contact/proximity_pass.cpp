@@ -5,7 +5,6 @@
 
 #include <Eigen/Geometry>
 
-#include "collision/closest_points.h"
 #include "contact/contact_impulse.h"
 #include "contact/contact_passes.h"
 
@@ -16,55 +15,11 @@ namespace {
 // thickness, gentle enough not to make stacked layers jitter.
 constexpr double kRepulsionFraction = 0.1;
 
-// A unit normal for a pair that touches (distance ~ 0), where the closest points give no direction:
-// the given geometric normal, turned against the relative velocity so the impulse separates them.
+// A touching pair's stand-in normal, turned against the relative velocity so the impulse
+// separates them.
 Vec3 orientAgainstApproach(Vec3 normal, const Vec3& relativeVelocity) {
   if (normal.dot(relativeVelocity) > 0.0) normal = -normal;
   return normal;
-}
-
-Vec3 anyPerpendicular(const Vec3& d) {
-  const Vec3 axis = std::abs(d.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY();
-  const Vec3 n = d.cross(axis);
-  return n.squaredNorm() > 0.0 ? n.normalized() : Vec3::UnitY();
-}
-
-// The contact of a pair at the start of the step when it is closer than the thickness.
-bool proximityContact(const std::vector<ContactBody>& bodies, const PrimitivePair& pair, double thickness, double h,
-                      ContactSide& a, ContactSide& b, Vec3& normal, double& distance) {
-  const std::vector<Vec3>& xa = *bodies[pair.bodyA].x0;
-  const std::vector<Vec3>& xb = *bodies[pair.bodyB].x0;
-  Vec3 fallback;
-  if (pair.kind == PairKind::VertexFace) {
-    const auto& face = bodies[pair.bodyB].topology->triangles[pair.featureB];
-    const Vec3& p = xa[pair.featureA];
-    const PointTriangleClosest c = closestPointOnTriangle(p, xb[face[0]], xb[face[1]], xb[face[2]]);
-    if (!(c.distance < thickness)) return false;
-    a = vertexSide(pair.bodyA, pair.featureA);
-    b = faceSide(bodies, pair.bodyB, pair.featureB, c.weights);
-    distance = c.distance;
-    normal = p - c.point;
-    fallback = (xb[face[1]] - xb[face[0]]).cross(xb[face[2]] - xb[face[0]]);
-  } else {
-    const auto& ea = bodies[pair.bodyA].topology->edges[pair.featureA];
-    const auto& eb = bodies[pair.bodyB].topology->edges[pair.featureB];
-    const SegmentSegmentClosest c = closestSegmentSegment(xa[ea[0]], xa[ea[1]], xb[eb[0]], xb[eb[1]]);
-    if (!(c.distance < thickness)) return false;
-    a = edgeSide(bodies, pair.bodyA, pair.featureA, c.s);
-    b = edgeSide(bodies, pair.bodyB, pair.featureB, c.t);
-    distance = c.distance;
-    normal = sidePosition(bodies, a, false) - sidePosition(bodies, b, false);
-    fallback = (xa[ea[1]] - xa[ea[0]]).cross(xb[eb[1]] - xb[eb[0]]);
-  }
-  // Below a thousandth of the thickness the closest-point direction is mostly rounding.
-  if (distance > 1e-3 * thickness) {
-    normal /= distance;
-  } else {
-    const Vec3 relative = sideVelocity(bodies, a, h) - sideVelocity(bodies, b, h);
-    normal = fallback.squaredNorm() > 0.0 ? fallback.normalized() : anyPerpendicular(relative);
-    normal = orientAgainstApproach(normal, relative);
-  }
-  return true;
 }
 
 // Cloth vertices against the ground plane y = height.
@@ -95,17 +50,18 @@ void groundProximity(std::vector<ContactBody>& bodies, const ContactStepSettings
 
 }  // namespace
 
-void runProximityPass(std::vector<ContactBody>& bodies, const std::vector<PrimitivePair>& pairs,
+void runProximityPass(std::vector<ContactBody>& bodies, const std::vector<NearPair>& nearPairs,
                       const ContactStepSettings& settings, PassCounts& counts) {
   if (settings.ground != nullptr) groundProximity(bodies, settings, counts);
-  for (const PrimitivePair& pair : pairs) {
-    ContactSide a, b;
-    Vec3 normal;
-    double distance = 0.0;
-    if (!proximityContact(bodies, pair, settings.thickness, settings.h, a, b, normal, distance)) continue;
-    const double target = kRepulsionFraction * (settings.thickness - distance) / settings.h;
+  for (const NearPair& near : nearPairs) {
+    if (!(near.distance < settings.thickness)) continue;
+    Vec3 normal = near.normal;
+    if (near.touching) {
+      normal = orientAgainstApproach(normal, sideVelocity(bodies, near.a, settings.h) - sideVelocity(bodies, near.b, settings.h));
+    }
+    const double target = kRepulsionFraction * (settings.thickness - near.distance) / settings.h;
     const ImpulseResult result =
-        applyContactImpulse(bodies, a, b, normal, target, pairFriction(bodies, pair), settings.h);
+        applyContactImpulse(bodies, near.a, near.b, normal, target, pairFriction(bodies, near.pair), settings.h);
     if (result.applied) ++counts.proximityImpulses;
   }
 }
