@@ -77,7 +77,8 @@ class ContactStage {
   std::vector<std::vector<double>> clothInverseMass_;
   std::vector<int> bodyToWorldIndex_;
   ContactPairing pairing_;
-  ContactPairing obstaclePairing_;  // cloths against obstacles (held contacts)
+  ContactPairing obstaclePairing_;  // cloths against obstacles
+  ContactPairing clothPairing_;     // cloths against themselves and each other
   bool holdsVertices_ = false;     // the integrator takes held vertices (linearized backward Euler)
   HeldContacts held_;
   std::vector<std::vector<HeldVertex>> heldVertices_;
@@ -85,6 +86,7 @@ class ContactStage {
   std::vector<PrimitivePair> pairs_;
   std::vector<PrimitivePair> startPairs_;  // candidate pairs at the start of the step
   std::vector<NearPair> nearPairs_;         // those within the reach, measured
+  std::vector<NearPair> nearClothPairs_;
   double holdReach() const { return 2.0 * spec_.thickness; }
   ContactStats stats_;
   std::vector<SharpContactRecord> records_;
