@@ -61,6 +61,19 @@ TEST(ContactScenes, SheetDroppedOnBoxNeverPassesThrough) {
   EXPECT_TRUE(world.metrics().finite);
 }
 
+TEST(ContactScenes, SheetDroppedOnASpinningCapsuleNeverPassesThrough) {
+  // A kinematic capsule lying along x and spinning about world y and z: its vertices move on arcs,
+  // which contact sees as chords (a straight line per step).
+  const Scene scene = loadScene(scenePath("sheet-on-sphere"),
+                                {"cloths.0.mesh.grid.resolution=[24,24]",
+                                 R"(obstacles.0.shape={"capsule": {"radius": 0.12, "half_length": 0.25}})",
+                                 "obstacles.0.placement.rotate_deg=[0,0,90]",
+                                 R"(obstacles.0.motion={"kinematic": {"angular_velocity_deg": [0, 30, 60]}})"});
+  World world(scene);
+  EXPECT_EQ(stepsWithPenetration(world, 180), 0);
+  EXPECT_TRUE(world.metrics().finite);
+}
+
 TEST(ContactScenes, SheetDroppedOnGroundStaysAbove) {
   const Scene scene = loadScene(scenePath("sheet-on-sphere"), {"cloths.0.mesh.grid.resolution=[16,16]", "obstacles=[]"});
   World world(scene);
