@@ -87,7 +87,10 @@ class ContactStage {
   std::vector<PrimitivePair> startPairs_;  // candidate pairs at the start of the step
   std::vector<NearPair> nearPairs_;         // those within the reach, measured
   std::vector<NearPair> nearClothPairs_;
-  double holdReach() const { return 2.0 * spec_.thickness; }
+  // Resting cloth sits between a tenth of the thickness (where pass 2 stops a pair) and the
+  // thickness (where pass 1 pushes it); a little beyond catches it all, and every extra
+  // millimetre of margin adds pairs to measure.
+  double holdReach() const { return 1.25 * spec_.thickness; }
   ContactStats stats_;
   std::vector<SharpContactRecord> records_;
 };
