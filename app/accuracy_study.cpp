@@ -18,7 +18,7 @@
 #include <sstream>
 #include <vector>
 
-#include "atomic_file.h"
+#include "util/atomic_file.h"
 #include "command.h"
 #include "scene/scene_json.h"
 #include "sim/world.h"

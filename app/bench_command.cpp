@@ -23,7 +23,7 @@
 #include <vector>
 
 #include "accuracy_study.h"
-#include "atomic_file.h"
+#include "util/atomic_file.h"
 #include "command.h"
 #include "contact_bench.h"
 #include "machine_info.h"

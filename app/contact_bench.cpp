@@ -11,7 +11,7 @@
 #include <thread>
 #include <vector>
 
-#include "atomic_file.h"
+#include "util/atomic_file.h"
 #include "command.h"
 #include "machine_info.h"
 #include "scene/scene_json.h"

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "atomic_file.h"
+#include "util/atomic_file.h"
 #include "command.h"
 #include "contact/obstacle.h"
 #include "frame_obj_writer.h"

@@ -1,17 +1,15 @@
 #include "rigid/sharp_tags.h"
 
 #include <algorithm>
-#include <cerrno>
-#include <cstring>
 #include <fstream>
 #include <map>
 #include <stdexcept>
 #include <string>
-#include <system_error>
 #include <utility>
 
 #include <nlohmann/json.hpp>
 
+#include "util/atomic_file.h"
 #include "util/input_error.h"
 #include "util/json_fields.h"
 
@@ -89,29 +87,6 @@ std::vector<std::array<int, 2>> readEdges(const FieldReader& r, const TriangleMe
   return edges;
 }
 
-// Kept beside the tags rather than shared with app/atomic_file.h: core cannot depend on app.
-void writeFileAtomically(const std::filesystem::path& file, const std::string& contents) {
-  std::filesystem::path temporary = file;
-  temporary += ".tmp";
-  {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    if (!out) throw std::runtime_error("cannot write " + temporary.string() + ": " + std::strerror(errno));
-    out.write(contents.data(), static_cast<std::streamsize>(contents.size()));
-    out.flush();
-    if (!out) {
-      std::error_code ignored;
-      std::filesystem::remove(temporary, ignored);
-      throw std::runtime_error("cannot write " + temporary.string() + ": " + std::strerror(errno));
-    }
-  }
-  std::error_code ec;
-  std::filesystem::rename(temporary, file, ec);  // replaces `file` in one step on POSIX file systems
-  if (ec) {
-    std::error_code ignored;
-    std::filesystem::remove(temporary, ignored);
-    throw std::runtime_error("cannot rename " + temporary.string() + " to " + file.string() + ": " + ec.message());
-  }
-}
 
 }  // namespace
 

@@ -13,6 +13,7 @@
 #include "contact/obstacle.h"
 #include "scene/scene_json.h"
 #include "sim/world.h"
+#include "support/temp_dir.h"
 #include "util/input_error.h"
 
 namespace weft {
@@ -21,27 +22,7 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-class TempDir {
- public:
-  TempDir() {
-    std::random_device seed;
-    path_ = fs::temp_directory_path() / ("weft_contact_json_test_" + std::to_string(seed()));
-    fs::create_directories(path_);
-  }
-  ~TempDir() {
-    std::error_code ignored;
-    fs::remove_all(path_, ignored);
-  }
-  fs::path write(const std::string& name, const std::string& contents) const {
-    const fs::path file = path_ / name;
-    fs::create_directories(file.parent_path());
-    std::ofstream(file) << contents;
-    return file;
-  }
-
- private:
-  fs::path path_;
-};
+using test::TempDir;
 
 json sceneWithObstacle(const std::string& obstacle) {
   json scene = json::parse(R"({"cloths": [{"mesh": {"grid": {}}, "material": "royal-target"}]})");

@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "scene/scene_json.h"
+#include "support/temp_dir.h"
 #include "util/input_error.h"
 
 namespace weft {
@@ -22,29 +23,7 @@ using nlohmann::json;
 
 const fs::path kPresetScenes = fs::path(WEFT_SOURCE_DIR) / "presets" / "scenes";
 
-// A fresh folder per test, removed afterwards.
-class TempDir {
- public:
-  TempDir() {
-    std::random_device seed;
-    path_ = fs::temp_directory_path() / ("weft_scene_test_" + std::to_string(seed()));
-    fs::create_directories(path_);
-  }
-  ~TempDir() {
-    std::error_code ignored;
-    fs::remove_all(path_, ignored);
-  }
-  const fs::path& path() const { return path_; }
-  fs::path write(const std::string& name, const std::string& contents) const {
-    const fs::path file = path_ / name;
-    fs::create_directories(file.parent_path());
-    std::ofstream(file) << contents;
-    return file;
-  }
-
- private:
-  fs::path path_;
-};
+using test::TempDir;
 
 // The smallest valid scene: one grid cloth of a preset material, everything else defaulted.
 json minimalScene() {

@@ -4,10 +4,10 @@
 #include <filesystem>
 #include <string>
 
-namespace weft::app {
+namespace weft {
 
 // Writes `contents` to `file` by writing `file`.tmp and renaming it over `file`. Throws
 // std::runtime_error naming the file when any part fails (the .tmp is removed).
 void writeFileAtomically(const std::filesystem::path& file, const std::string& contents);
 
-}  // namespace weft::app
+}  // namespace weft

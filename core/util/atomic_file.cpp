@@ -1,4 +1,4 @@
-#include "atomic_file.h"
+#include "util/atomic_file.h"
 
 #include <cerrno>
 #include <cstring>
@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <system_error>
 
-namespace weft::app {
+namespace weft {
 
 void writeFileAtomically(const std::filesystem::path& file, const std::string& contents) {
   std::filesystem::path temporary = file;
@@ -32,4 +32,4 @@ void writeFileAtomically(const std::filesystem::path& file, const std::string& c
   }
 }
 
-}  // namespace weft::app
+}  // namespace weft
