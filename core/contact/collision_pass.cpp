@@ -103,13 +103,7 @@ long long stopAtGround(std::vector<ContactBody>& bodies, const ContactStepSettin
     for (std::size_t i = 0; i < body.x0->size(); ++i) {
       if ((*body.inverseMass)[i] == 0.0 || !((*body.x1)[i].y() < ground.height)) continue;
       Vec3& v = (*body.v)[i];
-      const double normalChange = (rest - (*body.x0)[i].y()) / settings.h - v.y();
-      v.y() += normalChange;
-      Vec3 tangential(v.x(), 0.0, v.z());
-      const double speed = tangential.norm();
-      if (speed > 0.0) tangential *= std::max(0.0, 1.0 - ground.friction * normalChange / speed);
-      v.x() = tangential.x();
-      v.z() = tangential.z();
+      applyGroundImpulse(v, (rest - (*body.x0)[i].y()) / settings.h, ground.friction);
       (*body.x1)[i] = (*body.x0)[i] + settings.h * v;
       ++count;
     }

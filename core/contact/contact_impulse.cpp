@@ -39,4 +39,14 @@ ImpulseResult applyContactImpulse(std::vector<ContactBody>& bodies, const Contac
   return result;
 }
 
+void applyGroundImpulse(Vec3& v, double targetNormalVelocity, double mu) {
+  const double normalChange = targetNormalVelocity - v.y();
+  v.y() = targetNormalVelocity;
+  Vec3 tangential(v.x(), 0.0, v.z());
+  const double speed = tangential.norm();
+  if (speed > 0.0) tangential *= std::max(0.0, 1.0 - mu * normalChange / speed);
+  v.x() = tangential.x();
+  v.z() = tangential.z();
+}
+
 }  // namespace weft

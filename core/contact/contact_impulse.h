@@ -21,4 +21,9 @@ struct ImpulseResult {
 ImpulseResult applyContactImpulse(std::vector<ContactBody>& bodies, const ContactSide& a, const ContactSide& b,
                                   const Vec3& n, double targetNormalVelocity, double mu, double h);
 
+// A cloth vertex against the ground plane (normal +y, infinitely heavy): raises v.y to the target,
+// then Coulomb friction on the horizontal velocity (Bridson 2002 §7.2), as applyContactImpulse
+// does for a pair.
+void applyGroundImpulse(Vec3& v, double targetNormalVelocity, double mu);
+
 }  // namespace weft

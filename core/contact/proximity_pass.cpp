@@ -34,14 +34,7 @@ void groundProximity(std::vector<ContactBody>& bodies, const ContactStepSettings
       Vec3& v = (*body.v)[i];
       const double target = kRepulsionFraction * (settings.thickness - distance) / settings.h;
       if (!(v.y() < target)) continue;
-      const double normalChange = target - v.y();
-      v.y() = target;
-      // Coulomb friction against a static plane (Bridson 2002 §7.2).
-      Vec3 tangential(v.x(), 0.0, v.z());
-      const double speed = tangential.norm();
-      if (speed > 0.0) tangential *= std::max(0.0, 1.0 - ground.friction * normalChange / speed);
-      v.x() = tangential.x();
-      v.z() = tangential.z();
+      applyGroundImpulse(v, target, ground.friction);
       (*body.x1)[i] = (*body.x0)[i] + settings.h * v;
       ++counts.groundContacts;
     }

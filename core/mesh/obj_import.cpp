@@ -18,6 +18,7 @@
 
 #include "mesh/mesh_check.h"
 #include "util/input_error.h"
+#include "util/obj_text.h"
 
 namespace weft {
 
@@ -52,28 +53,6 @@ std::string readText(const std::filesystem::path& path, const ObjSource& source)
   return text.str();
 }
 
-// tinyobjloader reads a malformed or "nan" coordinate as 0 without a word. Positions and UVs are
-// the cloth's geometry, so every number on a `v` or `vt` line must parse in full and be finite.
-void requireNumericCoordinates(const std::string& text, const ObjSource& source) {
-  std::istringstream lines(text);
-  std::string line;
-  for (int lineNumber = 1; std::getline(lines, line); ++lineNumber) {
-    std::istringstream tokens(line);
-    std::string keyword;
-    tokens >> keyword;
-    if (keyword != "v" && keyword != "vt") continue;
-    std::string token;
-    while (tokens >> token) {
-      if (token[0] == '#') break;  // trailing comment
-      char* end = nullptr;
-      const double value = std::strtod(token.c_str(), &end);
-      const std::string where = "line " + std::to_string(lineNumber);
-      if (end != token.c_str() + token.size()) source.fail(where, "'" + token + "' is not a number");
-      if (!std::isfinite(value)) source.fail(where, "non-finite value '" + token + "'");
-    }
-  }
-}
-
 double uvArea(const Vec2& a, const Vec2& b, const Vec2& c) {
   const Vec2 e1 = b - a;
   const Vec2 e2 = c - a;
@@ -91,7 +70,10 @@ ClothMesh loadObjMesh(const ObjSpec& spec, const std::string& referencingFile) {
   }
 
   const std::string text = readText(path, source);
-  requireNumericCoordinates(text, source);
+  // Positions and UVs are the cloth's geometry: every number on a `v` or `vt` line must be one.
+  if (const auto problem = findBadCoordinate(text, {"v", "vt"})) {
+    source.fail("line " + std::to_string(problem->line), problem->message);
+  }
 
   tinyobj::ObjReaderConfig config;
   config.triangulate = false;  // fan-triangulated below, so face numbers in messages match the file

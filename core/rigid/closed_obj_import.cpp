@@ -13,6 +13,7 @@
 #include "rigid/closed_surface_check.h"
 #include "rigid/mass_properties.h"
 #include "util/input_error.h"
+#include "util/obj_text.h"
 
 namespace weft {
 
@@ -27,34 +28,14 @@ std::string readText(const std::filesystem::path& path) {
   return text.str();
 }
 
-// tinyobjloader reads a malformed or "nan" coordinate as 0 without a word; a tool's shape would
-// change silently. (The cloth loader, mesh/obj_import.cpp, checks its `v` and `vt` lines the same way.)
-void requireNumericPositions(const std::string& text, const std::string& file) {
-  std::istringstream lines(text);
-  std::string line;
-  for (int lineNumber = 1; std::getline(lines, line); ++lineNumber) {
-    std::istringstream tokens(line);
-    std::string keyword;
-    tokens >> keyword;
-    if (keyword != "v") continue;
-    std::string token;
-    while (tokens >> token) {
-      if (token[0] == '#') break;  // trailing comment
-      char* end = nullptr;
-      const double value = std::strtod(token.c_str(), &end);
-      const std::string where = "line " + std::to_string(lineNumber);
-      if (end != token.c_str() + token.size()) throw InputError(file, where, "'" + token + "' is not a number");
-      if (!std::isfinite(value)) throw InputError(file, where, "non-finite value '" + token + "'");
-    }
-  }
-}
-
 }  // namespace
 
 TriangleMesh loadClosedObj(const std::filesystem::path& path) {
   const std::string file = path.string();
   const std::string text = readText(path);
-  requireNumericPositions(text, file);
+  if (const auto problem = findBadCoordinate(text, {"v"})) {
+    throw InputError(file, "line " + std::to_string(problem->line), problem->message);
+  }
 
   tinyobj::ObjReaderConfig config;
   config.triangulate = false;  // fanned below, so face numbers in messages match the file's `f` lines
