@@ -1,11 +1,13 @@
 // `weft validate SCENE`: load everything a run would load (scene, material presets, meshes) and
 // check each mesh, without simulating. Meant for CI over presets/ and for editing scene files.
+#include <algorithm>
 #include <iostream>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "command.h"
+#include "contact/obstacle.h"
 #include "mesh/grid.h"
 #include "mesh/mesh_check.h"
 #include "mesh/obj_import.h"
@@ -41,7 +43,19 @@ int validateScene(const ValidateOptions& options) {
     // Building the world resolves pins and precomputes every element, as a run would.
     const World world(scene);
     std::cout << "ok: " << scene.name << ": " << scene.cloths.size() << " cloths, " << vertices << " vertices, "
-              << triangles << " triangles\n";
+              << triangles << " triangles";
+    if (world.obstacleCount() > 0) {
+      int sharp = 0;
+      for (int i = 0; i < world.obstacleCount(); ++i) {
+        const Obstacle& o = world.obstacle(i);
+        const bool anySharp = std::count(o.sharpVertex.begin(), o.sharpVertex.end(), 1) > 0 ||
+                              std::count(o.sharpEdge.begin(), o.sharpEdge.end(), 1) > 0;
+        sharp += anySharp ? 1 : 0;
+      }
+      std::cout << ", " << world.obstacleCount() << " obstacles (" << sharp << " with sharp tags)";
+    }
+    if (scene.ground.enabled) std::cout << ", ground at y = " << scene.ground.height;
+    std::cout << "\n";
     return kExitOk;
   } catch (const InputError& e) {
     std::cerr << "weft: " << e.what() << "\n";
