@@ -84,6 +84,27 @@ TEST(ContactScenes, SheetDroppedOnGroundStaysAbove) {
   }
 }
 
+TEST(ContactScenes, ClothHeldByTheGroundIsReleasedWhenLifted) {
+  // A sheet lying on the ground, then lifted 1.5 m by two corners: the vertices held along the
+  // ground's normal must let go as soon as the cloth pulls away (no glue).
+  const Scene scene = loadScene(
+      scenePath("sheet-on-sphere"),
+      {"cloths.0.mesh.grid.resolution=[16,16]", "obstacles=[]", "cloths.0.placement.translate=[-0.5,0.002,0.5]",
+       R"(cloths.0.pins=[{"corners": ["top_left", "top_right"],
+                          "script": [{"t": 0.5, "offset": [0, 0, 0]}, {"t": 1.5, "offset": [0, 1.5, 0]}]}])"});
+  World world(scene);
+  for (int s = 0; s < 30; ++s) world.step();  // 0.5 s lying on the ground
+  const long long heldWhileLying = world.contactStats().heldVertices;
+  EXPECT_GT(heldWhileLying, 16 * 16 * 20);  // most vertices held on most steps
+  for (int s = 0; s < 120; ++s) world.step();  // lifted, then hanging for 1 s
+  double lowest = 1e9;
+  for (const Vec3& x : world.cloth(0).x) lowest = std::min(lowest, x.y());
+  EXPECT_GT(lowest, 0.3) << "part of the sheet stayed stuck to the ground";
+  const long long heldAtTheEnd = world.contactStats().heldVertices;
+  world.step();
+  EXPECT_EQ(world.contactStats().heldVertices, heldAtTheEnd) << "vertices still held while hanging in the air";
+}
+
 // Odd when the segment from the ball's start to its centre crosses the sheet: the ball went through.
 int sheetCrossings(const ClothMesh& cloth, const Vec3& from, const Vec3& to) {
   int crossings = 0;
