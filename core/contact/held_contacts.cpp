@@ -14,6 +14,7 @@ namespace weft {
 void HeldContacts::collect(const std::vector<ContactBody>& bodies, const std::vector<NearPair>& nearPairs,
                            const GroundSpec* ground, const std::vector<int>& bodyToWorldIndex, double reach) {
   contacts_.clear();
+  std::sort(released_.begin(), released_.end());  // looked up once per touching pair below
   if (ground != nullptr) collectGround(bodies, *ground, bodyToWorldIndex, reach);
 
   // Every touching pair is one share of its obstacle's mass, split over the cloth vertices of its
@@ -35,10 +36,7 @@ void HeldContacts::collect(const std::vector<ContactBody>& bodies, const std::ve
     for (int k = 0; k < clothSide.count; ++k) {
       const int v = clothSide.vertex[k];
       if ((*cloth.inverseMass)[v] == 0.0 || clothSide.weight[k] <= 0.0) continue;  // pinned: its pin holds it
-      if (std::find(released_.begin(), released_.end(), std::make_pair(bodyToWorldIndex[clothSide.body], v)) !=
-          released_.end()) {
-        continue;
-      }
+      if (wasReleased(bodyToWorldIndex[clothSide.body], v)) continue;
       // (Eigen leaves a default-constructed vector uninitialized: start the sum at zero.)
       auto& entry = perVertex.try_emplace({clothSide.body, v, obstacleBody}, 0.0, Vec3::Zero()).first->second;
       entry.first += clothSide.weight[k];
@@ -71,7 +69,7 @@ void HeldContacts::collectGround(const std::vector<ContactBody>& bodies, const G
       if ((*body.inverseMass)[i] == 0.0 || !((*body.x0)[i].y() - ground.height < reach)) continue;
       const int cloth = bodyToWorldIndex[b];
       const int vertex = static_cast<int>(i);
-      if (std::find(released_.begin(), released_.end(), std::make_pair(cloth, vertex)) != released_.end()) continue;
+      if (wasReleased(cloth, vertex)) continue;
       Contact contact;
       contact.cloth = cloth;
       contact.vertex = vertex;
@@ -80,6 +78,10 @@ void HeldContacts::collectGround(const std::vector<ContactBody>& bodies, const G
       contacts_.push_back(contact);
     }
   }
+}
+
+bool HeldContacts::wasReleased(int cloth, int vertex) const {
+  return std::binary_search(released_.begin(), released_.end(), std::make_pair(cloth, vertex));
 }
 
 void HeldContacts::prescribe(const std::vector<Cloth>& cloths, const std::vector<Obstacle>& obstacles, double h,

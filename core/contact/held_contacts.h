@@ -70,6 +70,7 @@ class HeldContacts {
     Vec3 bodyPoint = Vec3::Zero();   // the vertex's position in the obstacle's body frame
     Vec3 bodyNormal = Vec3::Zero();  // outward surface normal there, body frame
   };
+  bool wasReleased(int cloth, int vertex) const;  // released_ must be sorted
   void collectGround(const std::vector<ContactBody>& bodies, const GroundSpec& ground,
                      const std::vector<int>& bodyToWorldIndex, double reach);
 
