@@ -8,6 +8,7 @@
 #include "collision/closest_points.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 #include <Eigen/Geometry>
@@ -28,11 +29,13 @@ double closestParameterOnSegment(const Vec3& p, const Vec3& x, const Vec3& d) {
 
 // Keeps the candidate point of the triangle (corner a + offset, barycentric w) if it is closer to
 // p (at a + r) than the best so far.
+// Both keepIfCloser compare squared distances (best.distance holds the square until the caller
+// takes its root once, on return): the candidates are many and the root is the costly part.
 void keepIfCloser(const Vec3& r, const Vec3& offset, double w0, double w1, double w2,
                   PointTriangleClosest& best) {
-  const double distance = (r - offset).norm();
-  if (distance >= best.distance) return;
-  best.distance = distance;
+  const double squared = (r - offset).squaredNorm();
+  if (squared >= best.distance) return;
+  best.distance = squared;
   best.weights[0] = w0;
   best.weights[1] = w1;
   best.weights[2] = w2;
@@ -41,9 +44,9 @@ void keepIfCloser(const Vec3& r, const Vec3& offset, double w0, double w1, doubl
 
 void keepIfCloser(const Vec3& p0, const Vec3& d1, double s, const Vec3& q0, const Vec3& d2, double t,
                   SegmentSegmentClosest& best) {
-  const double distance = ((p0 + s * d1) - (q0 + t * d2)).norm();
-  if (distance >= best.distance) return;
-  best.distance = distance;
+  const double squared = ((p0 + s * d1) - (q0 + t * d2)).squaredNorm();
+  if (squared >= best.distance) return;
+  best.distance = squared;
   best.s = s;
   best.t = t;
 }
@@ -70,6 +73,7 @@ PointTriangleClosest closestPointOnTriangle(const Vec3& p, const Vec3& a, const 
       const bool wellConditioned = nn > kIllConditionedSin2 * e0.squaredNorm() * e1.squaredNorm();
       if (wellConditioned) {
         best.point += a;
+        best.distance = std::sqrt(best.distance);
         return best;
       }
     }
@@ -84,6 +88,7 @@ PointTriangleClosest closestPointOnTriangle(const Vec3& p, const Vec3& a, const 
   const double sCA = closestParameterOnSegment(r, e1, -e1);
   keepIfCloser(r, (1.0 - sCA) * e1, sCA, 0.0, 1.0 - sCA, best);
   best.point += a;
+  best.distance = std::sqrt(best.distance);
   return best;
 }
 
@@ -108,7 +113,10 @@ SegmentSegmentClosest closestSegmentSegment(const Vec3& p0, const Vec3& p1, cons
     const double t = (a * f - b * c) / denominator;
     if (s >= 0.0 && s <= 1.0 && t >= 0.0 && t <= 1.0) {
       keepIfCloser(p0, d1, s, q0, d2, t, best);
-      if (denominator > kIllConditionedSin2 * a * e) return best;
+      if (denominator > kIllConditionedSin2 * a * e) {
+        best.distance = std::sqrt(best.distance);
+        return best;
+      }
     }
   }
 
@@ -118,6 +126,7 @@ SegmentSegmentClosest closestSegmentSegment(const Vec3& p0, const Vec3& p1, cons
   keepIfCloser(p0, d1, 1.0, q0, d2, closestParameterOnSegment(p1, q0, d2), best);
   keepIfCloser(p0, d1, closestParameterOnSegment(q0, p0, d1), q0, d2, 0.0, best);
   keepIfCloser(p0, d1, closestParameterOnSegment(q1, p0, d1), q0, d2, 1.0, best);
+  best.distance = std::sqrt(best.distance);
   return best;
 }
 
