@@ -18,8 +18,8 @@
 #include <sstream>
 #include <vector>
 
-#include "util/atomic_file.h"
 #include "command.h"
+#include "machine_info.h"
 #include "scene/scene_json.h"
 #include "sim/world.h"
 #include "util/input_error.h"
@@ -162,15 +162,7 @@ int runAccuracyStudy(const AccuracyOptions& options) {
     std::cerr << "weft: " << e.what() << "\n";
     return kExitBadInput;
   }
-  try {
-    fs::create_directories(fs::path(options.csv).parent_path().empty() ? fs::path(".") : fs::path(options.csv).parent_path());
-    writeFileAtomically(options.csv, csv.str());
-    std::printf("wrote %s\n", options.csv.c_str());
-  } catch (const std::exception& e) {
-    std::cerr << "weft: cannot write " << options.csv << ": " << e.what() << "\n";
-    return kExitFailure;
-  }
-  return kExitOk;
+  return writeBenchCsv(options.csv, csv.str()) ? kExitOk : kExitFailure;
 }
 
 }  // namespace weft::app

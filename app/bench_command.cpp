@@ -23,7 +23,6 @@
 #include <vector>
 
 #include "accuracy_study.h"
-#include "util/atomic_file.h"
 #include "command.h"
 #include "contact_bench.h"
 #include "machine_info.h"
@@ -268,15 +267,7 @@ int runBench(const BenchOptions& options) {
     results.push_back(std::move(r));
   }
 
-  try {
-    const fs::path csvFile(options.csv);
-    if (csvFile.has_parent_path()) fs::create_directories(csvFile.parent_path());
-    writeFileAtomically(csvFile, csvText(results, options, sceneFile));
-    std::printf("wrote %s\n", csvFile.string().c_str());
-  } catch (const std::exception& e) {
-    std::cerr << "weft: " << e.what() << "\n";
-    return kExitFailure;
-  }
+  if (!writeBenchCsv(options.csv, csvText(results, options, sceneFile))) return kExitFailure;
   const bool allFinite = std::all_of(results.begin(), results.end(), [](const Result& r) { return r.finite; });
   return allFinite ? kExitOk : kExitNonFinite;
 }

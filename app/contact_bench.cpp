@@ -11,7 +11,6 @@
 #include <thread>
 #include <vector>
 
-#include "util/atomic_file.h"
 #include "command.h"
 #include "machine_info.h"
 #include "scene/scene_json.h"
@@ -125,16 +124,7 @@ int runContactBench(const ContactBenchOptions& options) {
         << r.medianStepMs << "," << r.proximityImpulsesPerStep << "," << r.ccdIterationsPerStep << ","
         << r.ccdCollisionsPerStep << "," << r.impactZoneStepShare << "," << (r.clean ? "true" : "false") << "\n";
   }
-  try {
-    const fs::path file(options.csv);
-    if (file.has_parent_path()) fs::create_directories(file.parent_path());
-    writeFileAtomically(file, csv.str());
-    std::printf("wrote %s\n", options.csv.c_str());
-  } catch (const std::exception& e) {
-    std::cerr << "weft: cannot write " << options.csv << ": " << e.what() << "\n";
-    return kExitFailure;
-  }
-  return kExitOk;
+  return writeBenchCsv(options.csv, csv.str()) ? kExitOk : kExitFailure;
 }
 
 }  // namespace weft::app

@@ -4,7 +4,11 @@
 
 #include <cstdio>
 #include <ctime>
+#include <exception>
+#include <filesystem>
 #include <fstream>
+
+#include "util/atomic_file.h"
 
 namespace weft::app {
 
@@ -44,6 +48,19 @@ std::string utcDate() {
   char text[32];
   std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &tm);
   return text;
+}
+
+bool writeBenchCsv(const std::string& file, const std::string& text) {
+  try {
+    const std::filesystem::path path(file);
+    if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path());
+    writeFileAtomically(path, text);
+    std::printf("wrote %s\n", file.c_str());
+    return true;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "weft: cannot write %s: %s\n", file.c_str(), e.what());
+    return false;
+  }
 }
 
 }  // namespace weft::app

@@ -1,6 +1,6 @@
 #pragma once
-// What a benchmark CSV header says about where it ran: the machine, its CPU, the source revision
-// and the date, so results from different machines can be committed side by side.
+// What a benchmark CSV header says about where it ran (the machine, its CPU, the source revision
+// and the date, so results from different machines can be committed side by side), and writing it.
 #include <string>
 
 namespace weft::app {
@@ -9,5 +9,9 @@ std::string cpuModel();      // "AMD EPYC ..." from /proc/cpuinfo, or "unknown C
 std::string machineName();   // uname's machine, e.g. "x86_64"
 std::string gitDescribe();   // `git describe --always --dirty` of the source tree, or "unknown"
 std::string utcDate();       // ISO 8601, UTC
+
+// Writes a benchmark's CSV atomically, creating its folder, and says where; on failure prints
+// "weft: cannot write FILE: why" and returns false.
+bool writeBenchCsv(const std::string& file, const std::string& text);
 
 }  // namespace weft::app
