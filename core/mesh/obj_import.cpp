@@ -18,6 +18,7 @@
 
 #include "mesh/mesh_check.h"
 #include "util/input_error.h"
+#include "util/obj_faces.h"
 #include "util/obj_text.h"
 
 namespace weft {
@@ -119,50 +120,33 @@ ClothMesh loadObjMesh(const ObjSpec& spec, const std::string& referencingFile) {
                 static_cast<double>(attrib.texcoords[t + 1]) * spec.uvScale);
   };
 
-  int faceNumber = 0;  // 1-based, counting `f` lines through the whole file
-  for (const tinyobj::shape_t& shape : reader.GetShapes()) {
-    // tinyobjloader stores corner counts as bytes; a larger polygon would be misread.
-    size_t cornerTotal = 0;
-    for (const unsigned char cornerCount : shape.mesh.num_face_vertices) cornerTotal += cornerCount;
-    if (cornerTotal != shape.mesh.indices.size()) source.fail("", "a face has more than 255 corners");
-
-    size_t firstCorner = 0;
-    for (const unsigned char cornerCount : shape.mesh.num_face_vertices) {
-      ++faceNumber;
-      const std::string face = "face " + std::to_string(faceNumber);
-      const tinyobj::index_t* corners = &shape.mesh.indices[firstCorner];
-      firstCorner += cornerCount;
-      if (cornerCount < 3) source.fail(face, "has fewer than 3 corners");
-      for (int c = 0; c < cornerCount; ++c) {
-        if (corners[c].vertex_index < 0 || corners[c].vertex_index >= positionCount) {
-          source.fail(face, "position index out of range");
-        }
-        if (corners[c].texcoord_index < 0) source.fail(face, "a corner has no texture coordinate (write f v/vt)");
-        if (corners[c].texcoord_index >= uvCount) source.fail(face, "texture coordinate index out of range");
-      }
-
-      // Fan from the first corner; each triangle is turned counter-clockwise in UV space, the
-      // orientation that material-space rest shapes use.
-      for (int j = 1; j + 1 < cornerCount; ++j) {
-        std::array<tinyobj::index_t, 3> tri{corners[0], corners[j], corners[j + 1]};
-        std::array<Vec2, 3> rest{restCoordinates(tri[0]), restCoordinates(tri[1]), restCoordinates(tri[2])};
-        const double area = uvArea(rest[0], rest[1], rest[2]);
-        if (std::abs(area) < kMinRestArea) {
-          source.fail(face, "zero area in texture space (degenerate UVs); the triangle would have no rest shape");
-        }
-        if (area < 0.0) {
-          std::swap(tri[1], tri[2]);
-          std::swap(rest[1], rest[2]);
-        }
-        Triangle t;
-        for (int k = 0; k < 3; ++k) {
-          t.v[k] = clothVertex(tri[k]);
-          t.rest[k] = rest[k];
-        }
-        mesh.tris.push_back(t);
-      }
+  auto fail = [&](const std::string& where, const std::string& message) { source.fail(where, message); };
+  forEachObjFace(reader, positionCount, fail, [&](const std::string& face, const tinyobj::index_t* corners, int cornerCount) {
+    for (int c = 0; c < cornerCount; ++c) {
+      if (corners[c].texcoord_index < 0) source.fail(face, "a corner has no texture coordinate (write f v/vt)");
+      if (corners[c].texcoord_index >= uvCount) source.fail(face, "texture coordinate index out of range");
     }
-  }
+    // Fan from the first corner; each triangle is turned counter-clockwise in UV space, the
+    // orientation that material-space rest shapes use.
+    for (int j = 1; j + 1 < cornerCount; ++j) {
+      std::array<tinyobj::index_t, 3> tri{corners[0], corners[j], corners[j + 1]};
+      std::array<Vec2, 3> rest{restCoordinates(tri[0]), restCoordinates(tri[1]), restCoordinates(tri[2])};
+      const double area = uvArea(rest[0], rest[1], rest[2]);
+      if (std::abs(area) < kMinRestArea) {
+        source.fail(face, "zero area in texture space (degenerate UVs); the triangle would have no rest shape");
+      }
+      if (area < 0.0) {
+        std::swap(tri[1], tri[2]);
+        std::swap(rest[1], rest[2]);
+      }
+      Triangle t;
+      for (int k = 0; k < 3; ++k) {
+        t.v[k] = clothVertex(tri[k]);
+        t.rest[k] = rest[k];
+      }
+      mesh.tris.push_back(t);
+    }
+  });
   if (mesh.tris.empty()) source.fail("", "has no faces");
 
   buildEdges(mesh);

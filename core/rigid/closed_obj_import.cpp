@@ -13,6 +13,7 @@
 #include "rigid/closed_surface_check.h"
 #include "rigid/mass_properties.h"
 #include "util/input_error.h"
+#include "util/obj_faces.h"
 #include "util/obj_text.h"
 
 namespace weft {
@@ -60,30 +61,14 @@ TriangleMesh loadClosedObj(const std::filesystem::path& path) {
   }
   const int vertexCount = static_cast<int>(mesh.vertices.size());
 
-  int faceNumber = 0;  // 1-based, counting `f` lines through the whole file
-  for (const tinyobj::shape_t& shape : reader.GetShapes()) {
-    // tinyobjloader stores corner counts as bytes; a larger polygon would be misread.
-    size_t cornerTotal = 0;
-    for (const unsigned char cornerCount : shape.mesh.num_face_vertices) cornerTotal += cornerCount;
-    if (cornerTotal != shape.mesh.indices.size()) throw InputError(file, "", "a face has more than 255 corners");
-
-    size_t firstCorner = 0;
-    for (const unsigned char cornerCount : shape.mesh.num_face_vertices) {
-      ++faceNumber;
-      const std::string face = "face " + std::to_string(faceNumber);
-      const tinyobj::index_t* corners = &shape.mesh.indices[firstCorner];
-      firstCorner += cornerCount;
-      if (cornerCount < 3) throw InputError(file, face, "has fewer than 3 corners");
-      for (int c = 0; c < cornerCount; ++c) {
-        if (corners[c].vertex_index < 0 || corners[c].vertex_index >= vertexCount) {
-          throw InputError(file, face, "position index out of range");
+  forEachObjFace(
+      reader, vertexCount,
+      [&](const std::string& where, const std::string& message) { throw InputError(file, where, message); },
+      [&](const std::string&, const tinyobj::index_t* corners, int cornerCount) {
+        for (int j = 1; j + 1 < cornerCount; ++j) {
+          mesh.triangles.push_back({corners[0].vertex_index, corners[j].vertex_index, corners[j + 1].vertex_index});
         }
-      }
-      for (int j = 1; j + 1 < cornerCount; ++j) {
-        mesh.triangles.push_back({corners[0].vertex_index, corners[j].vertex_index, corners[j + 1].vertex_index});
-      }
-    }
-  }
+      });
   if (mesh.triangles.empty()) throw InputError(file, "", "has no faces");
 
   const std::vector<std::string> problems = closedSurfaceProblems(mesh);
