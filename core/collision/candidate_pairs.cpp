@@ -3,7 +3,10 @@
 #include <algorithm>
 #include <array>
 #include <cassert>
+#include <cmath>
 #include <cstdint>
+
+#include <Eigen/Geometry>
 
 namespace weft {
 
@@ -49,6 +52,86 @@ bool shareCorner(const std::array<int, 3>& s, const std::array<int, 3>& t) {
 
 bool shareVertex(const std::array<int, 2>& e, const std::array<int, 2>& f) {
   return e[0] == f[0] || e[0] == f[1] || e[1] == f[0] || e[1] == f[1];
+}
+
+// Exact culling by fixed planes (FixedPlane) ------------------------------------------------------
+
+// The side of `plane` a vertex stays on over the step: +1 or -1 when both its start and end
+// positions are farther than `limit` (plus the plane's slack) on that side, 0 otherwise (and
+// always 0 for a moving triangle's all-zero plane, or a non-finite position).
+int sideOfPlane(const FixedPlane& plane, const SweptMesh& m, int v, double limit) {
+  const double reach = limit + plane.slack;
+  const double d0 = plane.normal.dot((*m.x0)[v]) - plane.offset;
+  // The start-of-step pairs look at one instant (x1 is x0): half the work.
+  const double d1 = m.x1 == m.x0 ? d0 : plane.normal.dot((*m.x1)[v]) - plane.offset;
+  return static_cast<int>(d0 > reach && d1 > reach) - static_cast<int>(d0 < -reach && d1 < -reach);
+}
+
+// The sides of the three corners of triangle `t` of `m` against `plane`.
+std::array<int, 3> cornerSides(const FixedPlane& plane, const SweptMesh& m, int t, double limit) {
+  const auto& corners = m.mesh->triangles[t];
+  return {sideOfPlane(plane, m, corners[0], limit), sideOfPlane(plane, m, corners[1], limit),
+          sideOfPlane(plane, m, corners[2], limit)};
+}
+
+// All three on one side: the whole triangle (over the whole step) stays clear of the plane.
+bool allOnOneSide(const std::array<int, 3>& sides) {
+  return sides[0] != 0 && sides[0] == sides[1] && sides[1] == sides[2];
+}
+
+// The side of vertex v, a corner of `triangle`, read from that triangle's corner sides.
+int sideOfCorner(const std::array<int, 3>& triangle, const std::array<int, 3>& sides, int v) {
+  return sides[0] * (triangle[0] == v) + sides[1] * (triangle[1] == v) + sides[2] * (triangle[2] == v);
+}
+
+// An edge stays clear of a plane when both its ends stay clear on the same side.
+int edgeClear(int sideA, int sideB) { return (sideA == sideB) & (sideA != 0); }
+
+// The corner sides of triangle i of `a` against the plane of triangle j of `b`, and of j against
+// i's, for the features the triangle pair owns.
+struct PairSides {
+  std::array<int, 3> ofA{};  // corners of i against j's plane
+  std::array<int, 3> ofB{};  // corners of j against i's plane
+  bool separated = false;    // one triangle stays clear of the other's plane (then a side may be unset)
+};
+
+PairSides pairSides(const SweptMesh& a, int i, const SweptMesh& b, int j, double limit) {
+  PairSides sides;
+  if (b.hasFixedPlanes) {
+    sides.ofA = cornerSides(b.planes[j], a, i, limit);
+    sides.separated = allOnOneSide(sides.ofA);
+    if (sides.separated) return sides;
+  }
+  if (a.hasFixedPlanes) {
+    sides.ofB = cornerSides(a.planes[i], b, j, limit);
+    sides.separated = allOnOneSide(sides.ofB);
+  }
+  return sides;
+}
+
+// The distance below which a plane test must not cull: the margin, plus a bound on the rounding
+// of a point's distance to a plane at the scale of the meshes' coordinates.
+double planeLimit(const SweptMesh& a, const SweptMesh& b, double margin) {
+  auto scale = [](const Bvh& bvh) {
+    const Aabb& box = bvh.bounds();
+    return bvh.empty() ? 0.0 : std::max(box.lo.cwiseAbs().maxCoeff(), box.hi.cwiseAbs().maxCoeff());
+  };
+  return margin + 1e-12 * (1.0 + scale(a.bvh) + scale(b.bvh));
+}
+
+// The plane of triangle t if none of its corners moves over the step (else all zero).
+FixedPlane fixedPlane(const std::array<int, 3>& corners, const std::vector<Vec3>& x0, const std::vector<Vec3>& x1) {
+  FixedPlane plane;
+  for (int v : corners) {
+    if (x0[v] != x1[v]) return plane;
+  }
+  const Vec3 normal = (x0[corners[1]] - x0[corners[0]]).cross(x0[corners[2]] - x0[corners[0]]);
+  const double length = normal.norm();
+  if (!(length > 0.0) || !std::isfinite(length)) return plane;
+  plane.normal = normal / length;
+  plane.offset = plane.normal.dot(x0[corners[0]]);
+  for (int v : corners) plane.slack = std::max(plane.slack, std::abs(plane.normal.dot(x0[v]) - plane.offset));
+  return plane;
 }
 
 // Groups the vertices (or edges) by owning triangle: the topology half of OwnedFeatures.
@@ -145,23 +228,28 @@ class PairBatch {
 };
 
 // The vertices triangle `owner` of `vertices` owns against face `face` of `faces`: the
-// vertex-face candidates of that triangle pair. (No exclusion: in self collision this is only
-// called for triangles that share no corner.)
+// vertex-face candidates of that triangle pair, less those whose vertex stays clear of the face's
+// plane (`ownerSides`: the owner's corners against it). (No exclusion: in self collision this is
+// only called for triangles that share no corner.)
 void addVertexFacePairs(const SweptMesh& vertices, int owner, const SweptMesh& faces, int face, double margin,
-                        PairBatch<VertexFacePair>& out) {
+                        const std::array<int, 3>& ownerSides, PairBatch<VertexFacePair>& out) {
   const OwnedFeatures& owned = vertices.features.vertices;
   const Aabb& faceBox = faces.triangleBoxes[face];
+  const auto& corners = vertices.mesh->triangles[owner];
   out.reserve(3);
   for (int s = owned.start[owner]; s < owned.start[owner + 1]; ++s) {
-    out.add(overlapGrownFirst(owned.boxes[s], faceBox, margin), {owned.ids[s], face});
+    const int v = owned.ids[s];
+    out.add(overlapGrownFirst(owned.boxes[s], faceBox, margin) & (sideOfCorner(corners, ownerSides, v) == 0),
+            {v, face});
   }
 }
 
-// The edges triangle i of `a` owns against the edges triangle j of `b` owns. `kOrdered` (self
-// collision) stores each pair as (smaller, larger) id; a template parameter, so that the inner
-// loop carries no runtime flag.
+// The edges triangle i of `a` owns against the edges triangle j of `b` owns, less the pairs where
+// one edge stays clear of the plane of the other's triangle. `kOrdered` (self collision) stores
+// each pair as (smaller, larger) id; a template parameter, so that the inner loop carries no
+// runtime flag.
 template <bool kOrdered>
-void addEdgeEdgePairs(const SweptMesh& a, int i, const SweptMesh& b, int j, double margin,
+void addEdgeEdgePairs(const SweptMesh& a, int i, const SweptMesh& b, int j, double margin, const PairSides& sides,
                       PairBatch<EdgeEdgePair>& out) {
   const OwnedFeatures& ownedA = a.features.edges;
   const OwnedFeatures& ownedB = b.features.edges;
@@ -169,14 +257,23 @@ void addEdgeEdgePairs(const SweptMesh& a, int i, const SweptMesh& b, int j, doub
   if (beginB == endB) return;
   out.reserve(9);
   const Aabb& triangleBoxB = b.triangleBoxes[j];
+  const auto& cornersA = a.mesh->triangles[i];
+  const auto& cornersB = b.mesh->triangles[j];
   for (int s = ownedA.start[i]; s < ownedA.start[i + 1]; ++s) {
     const Aabb& boxA = ownedA.boxes[s];
-    // An edge of i that misses triangle j's box misses all of j's edges.
-    if (!overlapGrownFirst(boxA, triangleBoxB, margin)) continue;
     const int ea = ownedA.ids[s];
+    const auto& endsA = a.mesh->edges[ea];
+    // An edge of i that misses triangle j's box, or stays clear of its plane, misses all of j's edges.
+    if (!overlapGrownFirst(boxA, triangleBoxB, margin) ||
+        edgeClear(sideOfCorner(cornersA, sides.ofA, endsA[0]), sideOfCorner(cornersA, sides.ofA, endsA[1]))) {
+      continue;
+    }
     for (int t = beginB; t < endB; ++t) {
       const int eb = ownedB.ids[t];
-      const int keep = overlapGrownBoth(boxA, ownedB.boxes[t], margin);
+      const auto& endsB = b.mesh->edges[eb];
+      const int keep = overlapGrownBoth(boxA, ownedB.boxes[t], margin) &
+                       (edgeClear(sideOfCorner(cornersB, sides.ofB, endsB[0]),
+                                  sideOfCorner(cornersB, sides.ofB, endsB[1])) == 0);
       out.add(keep, kOrdered ? EdgeEdgePair{std::min(ea, eb), std::max(ea, eb)} : EdgeEdgePair{ea, eb});
     }
   }
@@ -252,6 +349,12 @@ void updateSweptMesh(SweptMesh& swept, double margin) {
     box.inflate(margin);
     swept.triangleBoxes[t] = box;
   }
+  swept.planes.resize(count);
+  swept.hasFixedPlanes = false;
+  for (size_t t = 0; t < count; ++t) {
+    swept.planes[t] = fixedPlane(mesh.triangles[t], x0, x1);
+    swept.hasFixedPlanes = swept.hasFixedPlanes || swept.planes[t].normal != Vec3::Zero();
+  }
 
   // Any topology change, including one that keeps the triangle count, invalidates the ownership
   // groups and neighbour lists (and the tree's shape, which was chosen for the old triangles'
@@ -287,16 +390,20 @@ void updateSweptMesh(SweptMesh& swept, double margin) {
 void findCandidatePairs(const SweptMesh& a, const SweptMesh& b, double margin, CandidatePairs& out) {
   assert(isUpToDate(a) && isUpToDate(b) && "call updateSweptMesh after a topology change");
   out.clear();
+  const double limit = planeLimit(a, b, margin);
   {
     PairBatch<VertexFacePair> vfAB(out.vfAB), vfBA(out.vfBA);
     PairBatch<EdgeEdgePair> ee(out.ee);
     // Triangle pair (i, j) emits the vertex-face pairs of the vertices each one owns against the
     // other, and the edge-edge pairs of the edges both own: every primitive pair has exactly one
-    // owning triangle pair, so none is emitted twice.
+    // owning triangle pair, so none is emitted twice. A triangle that stays clear of the other's
+    // plane has no feature that can come near the other's.
     a.bvh.overlappingPairs(b.bvh, [&](int i, int j) {
-      addVertexFacePairs(a, i, b, j, margin, vfAB);
-      addVertexFacePairs(b, j, a, i, margin, vfBA);
-      addEdgeEdgePairs<false>(a, i, b, j, margin, ee);
+      const PairSides sides = pairSides(a, i, b, j, limit);
+      if (sides.separated) return;
+      addVertexFacePairs(a, i, b, j, margin, sides.ofA, vfAB);
+      addVertexFacePairs(b, j, a, i, margin, sides.ofB, vfBA);
+      addEdgeEdgePairs<false>(a, i, b, j, margin, sides, ee);
     });
   }
   sortVertexFacePairs(out.vfAB, triangleCount(b));
@@ -320,12 +427,15 @@ void findSelfCandidatePairs(const SweptMesh& a, double margin, CandidatePairs& o
     // them are neighbours in a cloth, and then processed in one loop.
     std::array<std::pair<int, int>, 256> distant;
     int distantCount = 0;
+    const double limit = planeLimit(a, a, margin);
     auto processDistant = [&] {
       for (int k = 0; k < distantCount; ++k) {
         const auto [i, j] = distant[k];
-        addVertexFacePairs(a, i, a, j, margin, vf);
-        addVertexFacePairs(a, j, a, i, margin, vf);
-        addEdgeEdgePairs<true>(a, i, a, j, margin, ee);
+        const PairSides sides = pairSides(a, i, a, j, limit);
+        if (sides.separated) continue;
+        addVertexFacePairs(a, i, a, j, margin, sides.ofA, vf);
+        addVertexFacePairs(a, j, a, i, margin, sides.ofB, vf);
+        addEdgeEdgePairs<true>(a, i, a, j, margin, sides, ee);
       }
       distantCount = 0;
     };
@@ -335,7 +445,8 @@ void findSelfCandidatePairs(const SweptMesh& a, double margin, CandidatePairs& o
       if (distantCount == static_cast<int>(distant.size())) processDistant();
     });
     processDistant();
-    // Triangles sharing a corner: their candidates are listed, only the boxes are tested.
+    // Triangles sharing a corner: their candidates are listed, only the boxes are tested. (Plane
+    // tests would cull few of them: in a smooth sheet neighbours lie in nearly the same plane.)
     for (const auto& [slot, face] : features.neighbourVertexFace) {
       vf.reserve(1);
       vf.add(overlapGrownFirst(features.vertices.boxes[slot], a.triangleBoxes[face], margin),

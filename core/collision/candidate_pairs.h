@@ -32,17 +32,32 @@ struct SweptFeatures {
   std::vector<std::array<int, 2>> neighbourEdgeEdge;    // (slot in edges, slot in edges)
 };
 
+// The plane of a triangle that does not move over the step (a static obstacle's, or any triangle
+// when x0 and x1 are the same positions, as for the start-of-step pairs). A feature lying in that
+// plane cannot come within a distance d of points that stay farther than d on one side of it:
+// the exact culling findCandidatePairs applies after the box tests.
+// A triangle that moves, or is degenerate, has no plane: all zero, so every point is at distance
+// 0 from it and nothing is culled.
+struct FixedPlane {
+  Vec3 normal = Vec3::Zero();  // unit
+  double offset = 0.0;         // normal . x on the plane
+  double slack = 0.0;          // m: how far the triangle's own corners lie off the computed plane
+};
+
 // Positions of a mesh at the start (x0) and end (x1) of the step, with its triangle boxes and BVH.
 struct SweptMesh {
   const CollisionMesh* mesh = nullptr;
   const std::vector<Vec3>* x0 = nullptr;
   const std::vector<Vec3>* x1 = nullptr;
   std::vector<Aabb> triangleBoxes;  // swept over the step, grown by the margin
+  std::vector<FixedPlane> planes;   // of each triangle (all zero where it moves over the step)
+  bool hasFixedPlanes = false;      // some triangle has a plane
   Bvh bvh;
   SweptFeatures features;  // maintained by updateSweptMesh
 };
 
-// Recomputes the triangle boxes (x0, x1, grown by `margin`) and the feature boxes. Builds the BVH
+// Recomputes the triangle boxes (x0, x1, grown by `margin`), the feature boxes and the fixed
+// planes. Builds the BVH
 // and the topology-derived features if the mesh's triangles differ from those they were built for
 // (first use, or a tear or cut, even one that keeps the triangle count; a few milliseconds for an
 // 8k-triangle mesh), and refits the BVH otherwise.
@@ -58,8 +73,12 @@ struct EdgeEdgePair {
 };
 
 // Between two meshes A and B: vertices of A against faces of B (vfAB), vertices of B against faces
-// of A (vfBA), edges of A against edges of B. A pair is kept only when its own features' swept
-// boxes (grown by `margin`) overlap. Sorted, no repeats: the order never depends on threads.
+// of A (vfBA), edges of A against edges of B. A pair is kept when its own features' swept boxes
+// (grown by `margin`) overlap, unless a fixed plane proves it never comes within `margin`: the
+// plane of a face, or of the triangle owning a vertex or an edge (which lies in it), with the
+// other feature's start and end positions all farther than `margin` on one side. Every pair that
+// comes within `margin` during the step is kept. Sorted, no repeats: the order never depends on
+// threads.
 struct CandidatePairs {
   std::vector<VertexFacePair> vfAB;
   std::vector<VertexFacePair> vfBA;
