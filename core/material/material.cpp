@@ -170,7 +170,8 @@ std::vector<std::string> availablePresets(const std::vector<std::filesystem::pat
 }  // namespace
 
 Material parseMaterial(const nlohmann::json& j, const std::string& file, const std::string& path) {
-  const FieldReader r(j, path, file, {"name", "source", "area_density_kg_m2", "elasticity", "bending"}, kGot);
+  const FieldReader r(j, path, file, {"name", "source", "area_density_kg_m2", "elasticity", "bending", "tear_table"},
+                      kGot);
   Material m;
   // name and source are optional inline (a scene's own material); preset files require them.
   if (r.has("name")) m.name = r.requiredString("name", "the material's name");
@@ -178,6 +179,7 @@ Material parseMaterial(const nlohmann::json& j, const std::string& file, const s
   m.areaDensity = r.requiredNumber("area_density_kg_m2", Bound::Positive, "the area density in kg/m^2");
   m.elasticity = parseElasticity(r.required("elasticity", "the membrane model, an object"), r.pointer("elasticity"), file);
   m.bending = parseBending(r.required("bending", "the bending model, an object"), r.pointer("bending"), file);
+  if (r.has("tear_table")) m.tearTable = parseTearTable(r.at("tear_table"), file, r.pointer("tear_table"));
   return m;
 }
 
@@ -188,6 +190,7 @@ nlohmann::json materialToJson(const Material& m) {
   out["area_density_kg_m2"] = m.areaDensity;
   out["elasticity"] = elasticityToJson(m.elasticity);
   out["bending"] = bendingToJson(m.bending);
+  if (m.tearTable) out["tear_table"] = tearTableToJson(*m.tearTable);
   return out;
 }
 

@@ -3,12 +3,14 @@
 // presets/materials/ (Weft's JSON format) or given inline in a scene.
 #include <array>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json_fwd.hpp>
 
 #include "material/elasticity.h"
+#include "tearing/tear_table.h"
 
 namespace weft {
 
@@ -31,6 +33,7 @@ struct Material {
   double areaDensity = 0.2;    // kg/m^2
   ElasticitySettings elasticity;
   BendingSettings bending;
+  std::optional<TearTable> tearTable;  // none: the cloth never tears
 
   friend bool operator==(const Material&, const Material&) = default;
 };

@@ -9,6 +9,7 @@
 
 #include "material/material.h"
 #include "scene/contact_spec.h"
+#include "scene/tearing_spec.h"
 #include "util/types.h"
 
 namespace weft {
@@ -99,6 +100,7 @@ struct StageSwitches {
   bool wind = true;
   bool gravity = true;
   bool collision = true;  // contact with obstacles, the ground and (if on) the cloth itself
+  bool tearing = true;    // cloths whose material has a tear table tear
 };
 
 struct OutputSpec {
@@ -118,6 +120,7 @@ struct Scene {
   GroundSpec ground;
   std::vector<ObstacleSpec> obstacles;
   ContactSpec contact;
+  TearingSpec tearing;
 };
 
 int stepsPerFrame(const Scene& scene);

@@ -13,6 +13,7 @@
 #include "util/input_error.h"
 #include "util/json_fields.h"
 #include "scene/contact_json.h"
+#include "scene/tearing_json.h"
 #include "scene/scene_json_parts.h"
 
 namespace weft {
@@ -80,6 +81,21 @@ void parseMaterialField(const FieldReader& r, const SceneReadContext& ctx, Cloth
   // loadMaterialPreset names the scene field and lists the available presets when `name` is unknown.
   cloth.material = loadMaterialPreset(name, ctx.paths.materialDirs, ctx.file, at);
   cloth.materialName = name;
+}
+
+// A cloth's own tear table replaces its material's: a preset name (presets/tear_tables/NAME.json)
+// or an inline table.
+void parseTearTableField(const FieldReader& r, const SceneReadContext& ctx, ClothSpec& cloth) {
+  if (!r.has("tear_table")) return;
+  const json& value = r.at("tear_table");
+  const std::string at = r.pointer("tear_table");
+  if (value.is_object()) {
+    cloth.material.tearTable = parseTearTable(value, ctx.file, at);
+  } else if (value.is_string()) {
+    cloth.material.tearTable = loadTearTablePreset(value.get<std::string>(), ctx.paths.tearTableDirs, ctx.file, at);
+  } else {
+    r.fail(at, "must be a tear table preset name or a tear table object, " + got(value));
+  }
 }
 
 const std::vector<std::string>& cornerNames() {
@@ -199,13 +215,15 @@ ClothMesh buildMeshForChecks(const ClothSpec& cloth, const std::string& pointer,
 }
 
 ClothSpec parseCloth(const json& j, const std::string& pointer, std::size_t index, const SceneReadContext& ctx) {
-  const FieldReader r(j, pointer, ctx.file, {"name", "mesh", "placement", "material", "weft_angle_deg", "pins"});
+  const FieldReader r(j, pointer, ctx.file,
+                      {"name", "mesh", "placement", "material", "tear_table", "weft_angle_deg", "pins"});
   ClothSpec cloth;
   cloth.name = r.string("name", index == 0 ? std::string("cloth") : "cloth" + std::to_string(index));
   requireSafeName(r, "name", cloth.name);
   parseMesh(r.required("mesh", "{\"grid\": {...}} or {\"obj\": {\"path\": ...}}"), r.pointer("mesh"), ctx, cloth);
   if (r.has("placement")) cloth.placement = parsePlacement(r.at("placement"), r.pointer("placement"), ctx);
   parseMaterialField(r, ctx, cloth);
+  parseTearTableField(r, ctx, cloth);
   cloth.weftAngleDeg = r.number("weft_angle_deg", cloth.weftAngleDeg, Bound::Finite);
   if (r.has("pins")) {
     const json& groups = r.array("pins");
@@ -287,8 +305,9 @@ SolverSpec parseSolver(const json& j, const std::string& pointer, const SceneRea
 }
 
 StageSwitches parseStages(const json& j, const std::string& pointer, const SceneReadContext& ctx) {
-  const FieldReader r(j, pointer, ctx.file, {"bending", "wind", "gravity", "collision"});
+  const FieldReader r(j, pointer, ctx.file, {"bending", "wind", "gravity", "collision", "tearing"});
   StageSwitches stages;
+  stages.tearing = r.boolean("tearing", stages.tearing);
   stages.collision = r.boolean("collision", stages.collision);
   stages.bending = r.boolean("bending", stages.bending);
   stages.wind = r.boolean("wind", stages.wind);
@@ -366,14 +385,17 @@ SearchPaths defaultSearchPaths(const fs::path& sceneFile) {
   const fs::path folder = sceneFile.parent_path().empty() ? fs::path(".") : sceneFile.parent_path();
   paths.materialDirs.push_back((folder / ".." / "materials").lexically_normal());
   paths.materialDirs.push_back(fs::path(WEFT_SOURCE_DIR) / "presets" / "materials");
+  paths.tearTableDirs.push_back((folder / ".." / "tear_tables").lexically_normal());
+  paths.tearTableDirs.push_back(fs::path(WEFT_SOURCE_DIR) / "presets" / "tear_tables");
   paths.assetDirs.push_back(folder);
   paths.assetDirs.push_back(fs::path(WEFT_SOURCE_DIR) / "assets");
   if (const char* data = std::getenv("WEFT_DATA_DIR"); data != nullptr && *data != '\0') {
     paths.materialDirs.push_back(fs::path(data) / "presets" / "materials");
+    paths.tearTableDirs.push_back(fs::path(data) / "presets" / "tear_tables");
     paths.assetDirs.push_back(fs::path(data) / "assets");
   }
   // A scene inside presets/scenes finds the same folder twice: list each folder once.
-  for (auto* dirs : {&paths.materialDirs, &paths.assetDirs}) {
+  for (auto* dirs : {&paths.materialDirs, &paths.tearTableDirs, &paths.assetDirs}) {
     std::vector<fs::path> unique;
     for (const fs::path& dir : *dirs) {
       std::error_code error;
@@ -425,7 +447,7 @@ void applyOverrides(json& scene, const std::vector<std::string>& overrides, cons
 Scene parseScene(const json& j, const fs::path& file, const SearchPaths& paths) {
   const SceneReadContext ctx{file.string(), paths};
   const FieldReader r(j, "", ctx.file, {"name",   "description", "cloths", "forces",   "solver",
-                                              "stages", "output",      "ground", "obstacles", "contact"});
+                                              "stages", "output",      "ground", "obstacles", "contact", "tearing"});
   Scene scene;
   scene.file = file;
   scene.name = r.string("name", file.stem().string());
@@ -451,6 +473,7 @@ Scene parseScene(const json& j, const fs::path& file, const SearchPaths& paths) 
   if (r.has("ground")) scene.ground = parseGround(r.at("ground"), r.pointer("ground"), ctx);
   if (r.has("obstacles")) scene.obstacles = parseObstacles(r.array("obstacles"), r.pointer("obstacles"), ctx);
   if (r.has("contact")) scene.contact = parseContact(r.at("contact"), r.pointer("contact"), ctx);
+  if (r.has("tearing")) scene.tearing = parseTearing(r.at("tearing"), r.pointer("tearing"), ctx);
   return scene;
 }
 

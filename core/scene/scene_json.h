@@ -14,6 +14,7 @@ namespace weft {
 // and assets/ folders, and WEFT_DATA_DIR when set).
 struct SearchPaths {
   std::vector<std::filesystem::path> materialDirs;
+  std::vector<std::filesystem::path> tearTableDirs;
   std::vector<std::filesystem::path> assetDirs;
 };
 SearchPaths defaultSearchPaths(const std::filesystem::path& sceneFile);

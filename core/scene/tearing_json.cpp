@@ -1,0 +1,36 @@
+#include "scene/tearing_json.h"
+
+#include <nlohmann/json.hpp>
+
+#include "util/json_fields.h"
+
+namespace weft {
+
+TearingSpec parseTearing(const nlohmann::json& j, const std::string& pointer, const SceneReadContext& ctx) {
+  const FieldReader r(j, pointer, ctx.file,
+                      {"candidates", "dense_directions", "skip_by_bound", "tears_per_step", "min_spacing_m",
+                       "min_edge_length_m", "min_angle_deg", "snap_angle_deg"});
+  TearingSpec tearing;
+  const std::string lines = r.string("candidates", "thesis");
+  if (lines != "thesis" && lines != "dense") {
+    r.fail(r.pointer("candidates"), "must be \"thesis\" (three lines per incident triangle) or \"dense\" (the whole "
+                                    "fan), got \"" + lines + "\"");
+  }
+  tearing.denseLines = lines == "dense";
+  tearing.denseDirections = r.integer("dense_directions", tearing.denseDirections, 4);
+  tearing.skipByBound = r.boolean("skip_by_bound", tearing.skipByBound);
+  tearing.maxTearsPerStep = r.integer("tears_per_step", tearing.maxTearsPerStep, 1);
+  tearing.minSpacing = r.number("min_spacing_m", tearing.minSpacing, Bound::NonNegative,
+                                "the spacing of several tears in one step in m");
+  tearing.minEdgeLength = r.number("min_edge_length_m", tearing.minEdgeLength, Bound::Positive,
+                                   "the shortest edge a tear may create in m");
+  tearing.minAngleDeg = r.number("min_angle_deg", tearing.minAngleDeg, Bound::Positive,
+                                 "the smallest triangle angle a tear may create in degrees");
+  if (!(tearing.minAngleDeg < 30.0)) r.fail(r.pointer("min_angle_deg"), "must be below 30 degrees");
+  tearing.snapAngleDeg = r.number("snap_angle_deg", tearing.snapAngleDeg, Bound::NonNegative,
+                                  "the angle within which a line follows an existing edge in degrees");
+  if (!(tearing.snapAngleDeg < 30.0)) r.fail(r.pointer("snap_angle_deg"), "must be below 30 degrees");
+  return tearing;
+}
+
+}  // namespace weft

@@ -1,0 +1,58 @@
+#pragma once
+// Separation strength at a vertex (Pfaff et al. 2014 as the thesis gives it, Eq. 2.69-2.71): how
+// much balanced pull a candidate fracture line through the vertex would relieve.
+//
+// The vertex's fan of triangles is seen in material space as sectors of a circle around it, each
+// with its triangle's tensile stress sigma+. A line through the vertex (for a vertex on a border or
+// on an earlier tear, a ray into its fan) splits the fan into two sides. The force that side's
+// material exerts on the vertex is the traction integrated over its arc,
+//     q = sum over the side's sectors of sigma+_i * integral of n(theta) dtheta
+//       = sum sigma+_i (g(theta_end) - g(theta_start)),   g(theta) = (sin theta, -cos theta),
+// which is Eq. 2.69 with each tangent difference turned into the normal it integrates to (the
+// thesis prints the tangents t_i; the traction needs the normals, as in Pfaff 2014). The two sides
+// tear apart only as far as they pull in opposite directions: with q^ = unit(q1^ - q2^)
+// (Eq. 2.70), zeta = min(q1 . q^, -q2 . q^) (Eq. 2.71), and zero when the sides do not pull apart
+// (q1 . q2 >= 0): a rigid motion or an unbalanced load never tears.
+//
+// Scale: in a uniform stress sigma, a full line through an interior vertex collects the traction
+// over half a circle on each side, q1 = -q2 = 2 sigma n (n the line's unit normal); a ray from a
+// straight border collects it over a quarter circle on each side, once. zeta is normalized (halved
+// at an interior vertex) so that it equals |sigma n|, the traction across the line, in both cases:
+// a tear table's strength is then the critical traction across a line, in N/m (tear_table.h).
+// ARCSim does the same (halving, then doubling at border and crack vertices).
+#include <vector>
+
+#include "mesh/cloth_mesh.h"
+#include "util/types.h"
+
+namespace weft {
+
+// One incident triangle's corner at the vertex.
+struct FanSector {
+  double start = 0.0;  // angle of the corner's first edge (rad, material space)
+  double span = 0.0;   // counter-clockwise opening angle to its second edge, in (0, pi)
+  Mat2 stress = Mat2::Zero();  // the triangle's tensile stress sigma+, material frame (N/m)
+};
+
+struct VertexFan {
+  std::vector<FanSector> sectors;
+  bool closed = true;     // the sectors go all around (interior vertex)
+  double openStart = 0.0;  // not closed: the fan covers [openStart, openStart + openSpan] ccw
+  double openSpan = 0.0;
+};
+
+// The fan of `vertex` (its incident triangles `around`) with the per-triangle stresses. A fan
+// that does not close is open from the sector whose first edge lies on a boundary.
+VertexFan vertexFan(const ClothMesh& mesh, int vertex, const std::vector<int>& around,
+                    const std::vector<Mat2>& triangleStress);
+
+// zeta (N/m) for the line through the vertex at `angle` (rad, material space; for an open fan,
+// the ray at `angle`, which must lie inside the fan).
+double separationStrength(const VertexFan& fan, double angle);
+
+// An upper bound of separationStrength over every line or ray: |q| of an arc is at most the
+// largest principal stress times the arc's angle, and min(|q1|, |q2|) at most their mean. A vertex
+// whose bound is below the weakest required strength cannot tear in any direction.
+double separationStrengthBound(const VertexFan& fan);
+
+}  // namespace weft

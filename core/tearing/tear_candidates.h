@@ -1,0 +1,55 @@
+#pragma once
+// The candidate search (thesis §3.1-3.2): at every vertex, the fracture line with the highest
+// ratio omega = zeta / R(alpha) of separation strength to the strength the tear table requires in
+// its direction.
+//
+// Two ways to choose the lines tried at a vertex:
+// - Thesis: three per incident triangle (Figure 2.8), along its two edges at the vertex and along
+//   its corner's bisector (through the triangle's interior).
+// - Dense: the whole fan, sampled at evenly spaced directions (as ARCSim does with 200) and the
+//   best sample refined by a golden-section search between its neighbours; the line may then
+//   leave the vertex through any triangle.
+// A vertex whose bound on zeta (separation_strength.h) is below the tear table's weakest strength
+// cannot reach omega = 1 in any direction and is skipped (optional; the result is the same).
+#include <vector>
+
+#include "mesh/cloth_mesh.h"
+#include "tearing/tear_table.h"
+#include "util/types.h"
+
+namespace weft {
+
+enum class CandidateLines { Thesis, Dense };
+
+struct TearSearchSettings {
+  CandidateLines lines = CandidateLines::Thesis;
+  int denseDirections = 180;  // samples over a line's half turn (over the fan for a ray)
+  bool skipByBound = true;    // skip vertices whose zeta bound is below the weakest strength
+};
+
+struct TearCandidate {
+  int vertex = kNone;
+  double angle = 0.0;       // direction of the line (or ray) in material space (rad)
+  bool ray = false;         // the vertex is on a border or a tear: only the ray at `angle` opens
+  double separation = 0.0;  // zeta (N/m)
+  double required = 0.0;    // R(alpha) (N/m)
+  double alphaDeg = 0.0;    // angle from the warp direction V, Eq. 3.1-3.3, in [0, 180)
+  double ratio = 0.0;       // omega = zeta / R (Eq. 3.4)
+};
+
+struct TearSearchCounts {
+  long long vertices = 0;       // vertices looked at
+  long long skipped = 0;        // of which skipped by the bound
+  long long linesEvaluated = 0;  // zeta evaluations
+};
+
+// alpha of a line at `angle` (rad, material space) from the warp direction V of a cloth whose weft
+// U is at weftAngleRad from material x: Eq. 3.1-3.3 as printed (degrees, in [0, 180)).
+double angleFromWarpDeg(double angle, double weftAngleRad);
+
+// The best line of every vertex whose best omega exceeds 1, in vertex order.
+void findTearCandidates(const ClothMesh& mesh, const std::vector<Mat2>& triangleStress, const TearTable& table,
+                        double weftAngleRad, const TearSearchSettings& settings, std::vector<TearCandidate>& out,
+                        TearSearchCounts& counts);
+
+}  // namespace weft

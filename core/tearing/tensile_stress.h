@@ -1,0 +1,25 @@
+#pragma once
+// The stress that can tear (thesis §2.7, Eq. 2.60 and the sigma+ of Eq. 2.69): each triangle's
+// membrane stress turned into the material frame, with its compressive part removed, so a cloth
+// that is only compressed, or only moved, never tears.
+#include <vector>
+
+#include "material/elasticity.h"
+#include "util/types.h"
+
+namespace weft {
+
+struct Cloth;
+
+// The tensile part of a 2x2 symmetric stress: its eigen-decomposition with every negative
+// principal stress set to zero.
+Mat2 tensilePart(const Mat2& stress);
+
+// A membrane stress (s_uu, s_vv, s_uv) in the weft/warp frame (U at weftAngleRad from material x),
+// as a 2x2 tensor in the material frame (x, y of Triangle::rest).
+Mat2 stressInMaterialFrame(const Vec3& stressUV, double weftAngleRad);
+
+// sigma+ of every triangle of the cloth at its current positions (N/m), in the material frame.
+void tensileStresses(const Cloth& cloth, std::vector<Mat2>& outStress);
+
+}  // namespace weft

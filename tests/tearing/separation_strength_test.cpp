@@ -1,0 +1,130 @@
+#include "tearing/separation_strength.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <random>
+
+#include <Eigen/Eigenvalues>
+
+#include "tearing/tensile_stress.h"
+
+namespace weft {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+// A closed fan of n equal sectors starting at `offset`, all with the same stress.
+VertexFan regularFan(int n, const Mat2& stress, double offset = 0.1) {
+  VertexFan fan;
+  for (int k = 0; k < n; ++k) fan.sectors.push_back({offset + 2.0 * kPi * k / n, 2.0 * kPi / n, stress});
+  fan.closed = true;
+  fan.openSpan = 2.0 * kPi;
+  return fan;
+}
+
+// A border vertex on a straight border along x, material below it (angles from pi to 2 pi).
+VertexFan borderFan(int n, const Mat2& stress) {
+  VertexFan fan;
+  for (int k = 0; k < n; ++k) fan.sectors.push_back({kPi + kPi * k / n, kPi / n, stress});
+  fan.closed = false;
+  fan.openStart = kPi;
+  fan.openSpan = kPi;
+  return fan;
+}
+
+Mat2 uniaxial(double tension, double angle) {
+  const Vec2 d(std::cos(angle), std::sin(angle));
+  return tension * d * d.transpose();
+}
+
+TEST(SeparationStrength, UniformStressGivesTheTractionAcrossTheLine) {
+  // Eq. 2.69-2.71 normalized: zeta = |sigma n| for any fan of a uniform stress.
+  const double T = 300.0;
+  for (int sectors : {5, 6, 8, 13}) {
+    const VertexFan fan = regularFan(sectors, uniaxial(T, 0.0));
+    for (double beta = 0.0; beta < kPi; beta += 0.1) {
+      EXPECT_NEAR(separationStrength(fan, beta), T * std::abs(std::sin(beta)), 1e-9 * T)
+          << sectors << " sectors, line at " << beta;
+    }
+  }
+  const VertexFan isotropic = regularFan(6, 50.0 * Mat2::Identity());
+  for (double beta = 0.0; beta < kPi; beta += 0.3) EXPECT_NEAR(separationStrength(isotropic, beta), 50.0, 1e-9);
+}
+
+TEST(SeparationStrength, LinePerpendicularToThePullSeparatesMost) {
+  const VertexFan fan = regularFan(6, uniaxial(100.0, 0.7));
+  const double across = separationStrength(fan, 0.7 + kPi / 2);
+  EXPECT_NEAR(across, 100.0, 1e-9);
+  EXPECT_NEAR(separationStrength(fan, 0.7), 0.0, 1e-9) << "a line along the pull relieves nothing";
+  for (double beta = 0.0; beta < kPi; beta += 0.05) EXPECT_LE(separationStrength(fan, beta), across + 1e-9);
+}
+
+TEST(SeparationStrength, ABorderRayCountsOnce) {
+  // Tension along the border: the ray straight into the cloth opens it with the full traction.
+  const VertexFan fan = borderFan(4, uniaxial(80.0, 0.0));
+  EXPECT_NEAR(separationStrength(fan, 1.5 * kPi), 80.0, 1e-9);
+  // Along the border itself nothing is on one side.
+  EXPECT_NEAR(separationStrength(fan, kPi + 1e-12), 0.0, 1e-6);
+}
+
+TEST(SeparationStrength, CompressionAndUnbalancedLoadsDoNotSeparate) {
+  // sigma+ removes compression: a compressed fan has no tensile stress at all.
+  const Mat2 compressed = tensilePart(-200.0 * Mat2::Identity());
+  EXPECT_TRUE(compressed.isZero());
+  // Only one side pulls (its sectors stressed, the other side's free): an unbalanced load.
+  VertexFan fan = regularFan(6, Mat2::Zero(), 0.0);
+  for (int k = 0; k < 3; ++k) fan.sectors[k].stress = uniaxial(100.0, kPi / 2);
+  EXPECT_DOUBLE_EQ(separationStrength(fan, 0.0), 0.0);
+}
+
+TEST(SeparationStrength, TensilePartKeepsOnlyPositivePrincipalStresses) {
+  Mat2 s;
+  s << 100.0, 30.0, 30.0, -50.0;
+  const Mat2 plus = tensilePart(s);
+  const Eigen::SelfAdjointEigenSolver<Mat2> eigen(plus);
+  EXPECT_NEAR(eigen.eigenvalues()[0], 0.0, 1e-9);
+  EXPECT_GT(eigen.eigenvalues()[1], 100.0);
+  // The kept principal direction is the original's tensile one.
+  const Eigen::SelfAdjointEigenSolver<Mat2> original(s);
+  EXPECT_NEAR(std::abs(eigen.eigenvectors().col(1).dot(original.eigenvectors().col(1))), 1.0, 1e-12);
+}
+
+TEST(SeparationStrength, StressTurnsWithTheWeftAngle) {
+  // A pull along the weft U at 30 degrees from material x is a pull at 30 degrees in material space.
+  const Mat2 s = stressInMaterialFrame(Vec3(120.0, 0.0, 0.0), 30.0 * kPi / 180.0);
+  EXPECT_TRUE(s.isApprox(uniaxial(120.0, 30.0 * kPi / 180.0), 1e-12));
+}
+
+TEST(SeparationStrength, TheBoundIsNeverExceeded) {
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (int trial = 0; trial < 200; ++trial) {
+    // A random closed or open fan of random tensile stresses and uneven sectors.
+    const int n = 3 + static_cast<int>(unit(rng) * 6);
+    const bool closed = trial % 2 == 0;
+    const double total = closed ? 2.0 * kPi : kPi * (0.3 + 1.5 * unit(rng));
+    std::vector<double> weights(n);
+    double sum = 0.0;
+    for (double& w : weights) sum += (w = 0.2 + unit(rng));
+    VertexFan fan;
+    fan.closed = closed;
+    fan.openStart = 2.0 * kPi * unit(rng);
+    fan.openSpan = total;
+    double angle = fan.openStart;
+    for (int k = 0; k < n; ++k) {
+      Mat2 a = Mat2::Random() * 200.0;
+      fan.sectors.push_back({angle, total * weights[k] / sum, tensilePart(a + a.transpose())});
+      angle += fan.sectors.back().span;
+    }
+    const double bound = separationStrengthBound(fan);
+    for (int k = 1; k < 100; ++k) {
+      const double line = closed ? kPi * k / 100.0 : fan.openStart + total * k / 100.0;
+      EXPECT_LE(separationStrength(fan, line), bound * (1.0 + 1e-12)) << "trial " << trial;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace weft
