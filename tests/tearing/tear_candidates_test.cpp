@@ -1,0 +1,178 @@
+#include "tearing/tear_candidates.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "mesh/grid.h"
+#include "tearing/tear_selection.h"
+
+namespace weft {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+ClothMesh grid(int n) {
+  GridSpec spec;
+  spec.resolutionX = n;
+  spec.resolutionY = n;
+  spec.width = 1.0;
+  spec.height = 1.0;
+  return makeGrid(spec);
+}
+
+// A uniform pull of `tension` N/m along material direction `angle` in every triangle.
+std::vector<Mat2> uniformPull(const ClothMesh& mesh, double tension, double angle) {
+  const Vec2 d(std::cos(angle), std::sin(angle));
+  return std::vector<Mat2>(mesh.tris.size(), tension * d * d.transpose());
+}
+
+TearTable isotropicTable(double strength) {
+  TearTable table;
+  table.strength = {strength};
+  return table;
+}
+
+TEST(TearCandidates, AngleFromWarpFollowsEquations31To33) {
+  // Weft along material x: V is material y. A line along V is alpha 0, along U alpha 90.
+  EXPECT_NEAR(angleFromWarpDeg(kPi / 2, 0.0), 0.0, 1e-9);
+  EXPECT_NEAR(angleFromWarpDeg(0.0, 0.0), 90.0, 1e-9);
+  EXPECT_NEAR(angleFromWarpDeg(kPi, 0.0), 90.0, 1e-9) << "a line has no sense";
+  // Eq. 3.1 measures alpha clockwise from V: a line at 45 degrees (x = y) is 45 from V clockwise.
+  EXPECT_NEAR(angleFromWarpDeg(kPi / 4, 0.0), 45.0, 1e-9);
+  EXPECT_NEAR(angleFromWarpDeg(3 * kPi / 4, 0.0), 135.0, 1e-9);
+  // The frame turns with the weft.
+  const double weft = 30.0 * kPi / 180.0;
+  EXPECT_NEAR(angleFromWarpDeg(weft + kPi / 2, weft), 0.0, 1e-9);
+}
+
+// The best line of the vertex at the middle of the grid.
+TearCandidate bestAtCentre(const ClothMesh& mesh, const std::vector<Mat2>& stress, const TearTable& table,
+                           double weft, CandidateLines lines) {
+  TearSearchSettings settings;
+  settings.lines = lines;
+  std::vector<TearCandidate> found;
+  TearSearchCounts counts;
+  findTearCandidates(mesh, stress, table, weft, settings, found, counts);
+  const int n = static_cast<int>(std::lround(std::sqrt(mesh.vertexCount())));
+  const int centre = (n / 2) * n + n / 2;  // an interior vertex of the square grid
+  for (const TearCandidate& c : found) {
+    if (c.vertex == centre) return c;
+  }
+  ADD_FAILURE() << "the centre vertex has no candidate";
+  return {};
+}
+
+TEST(TearCandidates, APullAlongTheWarpTearsAcrossItAndAlongTheWeftLikewise) {
+  const ClothMesh mesh = grid(8);
+  for (const double weftDeg : {0.0, 30.0}) {
+    const double weft = weftDeg * kPi / 180.0;
+    for (const CandidateLines lines : {CandidateLines::Thesis, CandidateLines::Dense}) {
+      // Pull along V (the warp): the tear runs across it, along U: alpha 90.
+      const TearCandidate acrossWarp =
+          bestAtCentre(mesh, uniformPull(mesh, 200.0, weft + kPi / 2), isotropicTable(100.0), weft, lines);
+      // Pull along U (the weft): the tear runs along V: alpha 0.
+      const TearCandidate acrossWeft = bestAtCentre(mesh, uniformPull(mesh, 200.0, weft), isotropicTable(100.0), weft, lines);
+      // The thesis' lines can only follow the mesh: the grid's edges are at 0, 45 and 90 degrees
+      // in material space, so at a 30 degree weft the closest line is 15 degrees off.
+      const double tolerance = lines == CandidateLines::Dense ? 1.0 : (weftDeg == 0.0 ? 1e-6 : 15.0 + 1e-6);
+      EXPECT_NEAR(acrossWarp.alphaDeg, 90.0, tolerance) << "weft " << weftDeg;
+      const double alpha = acrossWeft.alphaDeg > 90.0 ? acrossWeft.alphaDeg - 180.0 : acrossWeft.alphaDeg;
+      EXPECT_NEAR(alpha, 0.0, tolerance) << "weft " << weftDeg;
+      if (lines == CandidateLines::Dense) {
+        EXPECT_NEAR(acrossWarp.separation, 200.0, 1e-3) << "the dense line is the one across the pull";
+        EXPECT_NEAR(acrossWarp.ratio, 2.0, 1e-5);
+      }
+    }
+  }
+}
+
+TEST(TearCandidates, TheWeakDirectionOfTheTableWinsUnderAnEqualPullInAllDirections) {
+  // Table 4.1, Cloth 2: strong at 0, weak at 90 degrees from V: an isotropic stress tears along U.
+  const ClothMesh mesh = grid(8);
+  TearTable table;
+  table.strength = {35.0, 25.0, 12.0, 25.0};
+  table.unitNPerM = 10.0;
+  const std::vector<Mat2> stress(mesh.tris.size(), 150.0 * Mat2::Identity());
+  for (const CandidateLines lines : {CandidateLines::Thesis, CandidateLines::Dense}) {
+    const TearCandidate best = bestAtCentre(mesh, stress, table, 0.0, lines);
+    EXPECT_NEAR(best.alphaDeg, 90.0, 1e-6);
+    EXPECT_NEAR(best.ratio, 150.0 / 120.0, 1e-9);
+  }
+}
+
+TEST(TearCandidates, SkippingByTheBoundChangesNothing) {
+  const ClothMesh mesh = grid(12);
+  // A stress that varies over the sheet: only some vertices can reach the table.
+  std::vector<Mat2> stress(mesh.tris.size());
+  for (std::size_t t = 0; t < stress.size(); ++t) {
+    const double a = 0.37 * static_cast<double>(t);
+    const Vec2 d(std::cos(a), std::sin(a));
+    stress[t] = (40.0 + 160.0 * std::abs(std::sin(0.05 * t))) * d * d.transpose() + 10.0 * Mat2::Identity();
+  }
+  TearTable table;
+  table.strength = {12.0, 25.0, 35.0, 25.0};
+  table.unitNPerM = 10.0;
+  for (const CandidateLines lines : {CandidateLines::Thesis, CandidateLines::Dense}) {
+    TearSearchSettings with, without;
+    with.lines = without.lines = lines;
+    without.skipByBound = false;
+    std::vector<TearCandidate> a, b;
+    TearSearchCounts countsWith, countsWithout;
+    findTearCandidates(mesh, stress, table, 0.2, with, a, countsWith);
+    findTearCandidates(mesh, stress, table, 0.2, without, b, countsWithout);
+    ASSERT_EQ(a.size(), b.size());
+    EXPECT_GT(a.size(), 0u) << "some vertex should tear";
+    for (std::size_t k = 0; k < a.size(); ++k) {
+      EXPECT_EQ(a[k].vertex, b[k].vertex);
+      EXPECT_EQ(a[k].angle, b[k].angle);
+      EXPECT_EQ(a[k].ratio, b[k].ratio);
+    }
+    EXPECT_GT(countsWith.skipped, 0) << "the bound should skip the quiet vertices";
+    EXPECT_LT(countsWith.linesEvaluated, countsWithout.linesEvaluated);
+  }
+}
+
+TEST(TearSelection, TheThesisRatioExampleAWithTenOverEightBeatsBWithTwentyOverNineteen) {
+  // Thesis §3.2: omega_A = 10 / 8 = 1.25 beats omega_B = 20 / 19 = 1.053, though B separates more.
+  const ClothMesh mesh = grid(4);
+  TearCandidate a, b;
+  a.vertex = 7;
+  a.separation = 10.0;
+  a.required = 8.0;
+  a.ratio = a.separation / a.required;
+  b.vertex = 8;
+  b.separation = 20.0;
+  b.required = 19.0;
+  b.ratio = b.separation / b.required;
+  const std::vector<TearCandidate> chosen = selectTears({b, a}, mesh, TearSelectionSettings{});
+  ASSERT_EQ(chosen.size(), 1u);
+  EXPECT_EQ(chosen[0].vertex, 7);
+}
+
+TEST(TearSelection, SeveralTearsPerStepKeepTheirSpacingAndNothingBelowOneTears) {
+  const ClothMesh mesh = grid(10);  // 1/9 m cells
+  std::vector<TearCandidate> candidates;
+  for (int v : {12, 13, 50, 88}) {
+    TearCandidate c;
+    c.vertex = v;
+    c.ratio = 2.0 - 0.01 * v;
+    candidates.push_back(c);
+  }
+  candidates.push_back(candidates[0]);
+  candidates.back().vertex = 99;
+  candidates.back().ratio = 0.9;
+  TearSelectionSettings settings;
+  settings.maxTearsPerStep = 10;
+  settings.minSpacing = 0.25;
+  const std::vector<TearCandidate> chosen = selectTears(candidates, mesh, settings);
+  // 13 is a neighbour of 12 (1/9 m away): dropped; 99 is below 1.
+  ASSERT_EQ(chosen.size(), 3u);
+  EXPECT_EQ(chosen[0].vertex, 12);
+  EXPECT_EQ(chosen[1].vertex, 50);
+  EXPECT_EQ(chosen[2].vertex, 88);
+}
+
+}  // namespace
+}  // namespace weft
