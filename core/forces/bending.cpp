@@ -22,6 +22,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include <Eigen/Geometry>
 
@@ -280,53 +281,60 @@ int oppositeVertex(const Triangle& t, int a, int b) {
 
 }  // namespace
 
-std::vector<BendingHinge> buildBendingHinges(const ClothMesh& mesh, double weftAngleRad, bool restFromCurrent) {
-  std::vector<BendingHinge> hinges;
+std::optional<BendingHinge> makeBendingHinge(const ClothMesh& mesh, int edgeId, double weftAngleRad,
+                                             bool restFromCurrent) {
+  const Edge& edge = mesh.edges[edgeId];
+  if (edge.tri[0] == kNone || edge.tri[1] == kNone) return std::nullopt;  // a border edge bends nothing (§2.4)
+  const Triangle& first = mesh.tris[edge.tri[0]];
+  const Triangle& second = mesh.tris[edge.tri[1]];
+
+  // Take the edge in the direction the first triangle runs along it, so that the first
+  // triangle is (x0, x1, x2) and, the mesh being counter-clockwise in material space, the
+  // second is (x0, x3, x1): both normals then agree on a flat sheet (theta = 0).
+  int corner = kNone;
+  for (int k = 0; k < 3; ++k) {
+    const int a = first.v[k];
+    const int b = first.v[(k + 1) % 3];
+    if ((a == edge.v[0] && b == edge.v[1]) || (a == edge.v[1] && b == edge.v[0])) corner = k;
+  }
+  if (corner == kNone) return std::nullopt;
+
+  BendingHinge hinge;
+  hinge.edge = edgeId;
+  hinge.v = {first.v[corner], first.v[(corner + 1) % 3], first.v[(corner + 2) % 3],
+             oppositeVertex(second, first.v[corner], first.v[(corner + 1) % 3])};
+  if (hinge.v[3] == kNone) return std::nullopt;
+
+  const Vec2 restEdge = first.rest[(corner + 1) % 3] - first.rest[corner];
+  const double area0 = std::abs(restArea(first));
+  const double area1 = std::abs(restArea(second));
+  hinge.restLength = restEdge.norm();
+  hinge.restAreaSum = area0 + area1;
+  if (!(area0 > 0.0) || !(area1 > 0.0) || !(hinge.restLength > 0.0)) return std::nullopt;
+
+  // Edge direction in the weft/warp frame (material space rotated by -weftAngleRad). Taking
+  // absolute values folds it into [0, pi/2]: an edge has no orientation, and the table treats
+  // +45 and -45 degrees alike.
   const double cosWeft = std::cos(weftAngleRad);
   const double sinWeft = std::sin(weftAngleRad);
+  const double alongWeft = cosWeft * restEdge.x() + sinWeft * restEdge.y();
+  const double alongWarp = -sinWeft * restEdge.x() + cosWeft * restEdge.y();
+  hinge.edgeAngle = std::atan2(std::abs(alongWarp), std::abs(alongWeft));
+
+  if (restFromCurrent) {
+    const HingeGeometry g = hingeGeometry(
+        {plain(mesh.x[hinge.v[0]]), plain(mesh.x[hinge.v[1]]), plain(mesh.x[hinge.v[2]]), plain(mesh.x[hinge.v[3]])});
+    hinge.restAngle = g.degenerate ? 0.0 : g.theta;
+  }
+  return hinge;
+}
+
+std::vector<BendingHinge> buildBendingHinges(const ClothMesh& mesh, double weftAngleRad, bool restFromCurrent) {
+  std::vector<BendingHinge> hinges;
   for (int id = 0; id < mesh.edgeCount(); ++id) {
-    const Edge& edge = mesh.edges[id];
-    if (edge.tri[1] == kNone) continue;  // a border edge bends nothing (§2.4)
-    const Triangle& first = mesh.tris[edge.tri[0]];
-    const Triangle& second = mesh.tris[edge.tri[1]];
-
-    // Take the edge in the direction the first triangle runs along it, so that the first
-    // triangle is (x0, x1, x2) and, the mesh being counter-clockwise in material space, the
-    // second is (x0, x3, x1): both normals then agree on a flat sheet (theta = 0).
-    int corner = kNone;
-    for (int k = 0; k < 3; ++k) {
-      const int a = first.v[k];
-      const int b = first.v[(k + 1) % 3];
-      if ((a == edge.v[0] && b == edge.v[1]) || (a == edge.v[1] && b == edge.v[0])) corner = k;
+    if (std::optional<BendingHinge> hinge = makeBendingHinge(mesh, id, weftAngleRad, restFromCurrent)) {
+      hinges.push_back(*hinge);
     }
-    if (corner == kNone) continue;
-
-    BendingHinge hinge;
-    hinge.edge = id;
-    hinge.v = {first.v[corner], first.v[(corner + 1) % 3], first.v[(corner + 2) % 3],
-               oppositeVertex(second, first.v[corner], first.v[(corner + 1) % 3])};
-    if (hinge.v[3] == kNone) continue;
-
-    const Vec2 restEdge = first.rest[(corner + 1) % 3] - first.rest[corner];
-    const double area0 = std::abs(restArea(first));
-    const double area1 = std::abs(restArea(second));
-    hinge.restLength = restEdge.norm();
-    hinge.restAreaSum = area0 + area1;
-    if (!(area0 > 0.0) || !(area1 > 0.0) || !(hinge.restLength > 0.0)) continue;
-
-    // Edge direction in the weft/warp frame (material space rotated by -weftAngleRad). Taking
-    // absolute values folds it into [0, pi/2]: an edge has no orientation, and the table treats
-    // +45 and -45 degrees alike.
-    const double alongWeft = cosWeft * restEdge.x() + sinWeft * restEdge.y();
-    const double alongWarp = -sinWeft * restEdge.x() + cosWeft * restEdge.y();
-    hinge.edgeAngle = std::atan2(std::abs(alongWarp), std::abs(alongWeft));
-
-    if (restFromCurrent) {
-      const HingeGeometry g = hingeGeometry(
-          {plain(mesh.x[hinge.v[0]]), plain(mesh.x[hinge.v[1]]), plain(mesh.x[hinge.v[2]]), plain(mesh.x[hinge.v[3]])});
-      hinge.restAngle = g.degenerate ? 0.0 : g.theta;
-    }
-    hinges.push_back(hinge);
   }
   return hinges;
 }

@@ -6,6 +6,7 @@
 // rest, minus the gradient of a hinge energy of the dihedral angle theta (the u_i are the gradient
 // of theta up to sign), so we evaluate it as such: energy, force = -gradient, and a Hessian.
 #include <array>
+#include <optional>
 #include <vector>
 
 #include <Eigen/Core>
@@ -76,6 +77,11 @@ struct HingeResult {
 // Builds one hinge per interior edge, from the mesh's rest coordinates and current positions
 // (the rest angle is taken as flat unless `restFromCurrent`).
 std::vector<BendingHinge> buildBendingHinges(const ClothMesh& mesh, double weftAngleRad, bool restFromCurrent = false);
+
+// The hinge of one edge, as buildBendingHinges makes it; nothing for a border edge or a degenerate
+// pair of triangles. Lets a topology change refresh the few hinges it touched.
+std::optional<BendingHinge> makeBendingHinge(const ClothMesh& mesh, int edge, double weftAngleRad,
+                                             bool restFromCurrent = false);
 
 // Evaluates one hinge at positions x0..x3 (ordered as BendingHinge::v).
 HingeResult evaluateHinge(const BendingHinge& hinge, const BendingSettings& settings, const Vec3& x0, const Vec3& x1,

@@ -19,6 +19,19 @@ double restArea(const Triangle& t) {
   return 0.5 * (e1.x() * e2.y() - e1.y() * e2.x());
 }
 
+double smallestAngle(const Vec2& a, const Vec2& b, const Vec2& c) {
+  // Each corner's angle as atan2(|cross|, dot) of its two sides: accurate at every angle, where
+  // acos of a normalised dot product loses precision near 0 (the slivers this is meant to catch).
+  auto angleAt = [](const Vec2& corner, const Vec2& p, const Vec2& q) {
+    const Vec2 u = p - corner;
+    const Vec2 w = q - corner;
+    return std::atan2(std::abs(u.x() * w.y() - u.y() * w.x()), u.dot(w));
+  };
+  return std::min({angleAt(a, b, c), angleAt(b, c, a), angleAt(c, a, b)});
+}
+
+double smallestRestAngle(const Triangle& t) { return smallestAngle(t.rest[0], t.rest[1], t.rest[2]); }
+
 namespace {
 
 // One triangle side seen from its lower endpoint: the side joins `low` (the bucket it sits in)

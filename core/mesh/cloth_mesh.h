@@ -53,6 +53,11 @@ struct ClothMesh {
 // Signed area of a triangle's rest shape in material space (m^2); positive when counter-clockwise.
 double restArea(const Triangle& t);
 
+// Smallest interior angle (rad) of the triangle with corners a, b, c; 0 for a degenerate one.
+double smallestAngle(const Vec2& a, const Vec2& b, const Vec2& c);
+// Smallest interior angle (rad) of a triangle's rest shape.
+double smallestRestAngle(const Triangle& t);
+
 // Builds `edges` and every Triangle::edge from the triangles' vertex ids. Used once when a mesh is
 // created; topology changes patch edges locally instead.
 void buildEdges(ClothMesh& mesh);

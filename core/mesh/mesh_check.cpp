@@ -168,7 +168,9 @@ void checkEdges(const ClothMesh& mesh, Problems& out) {
       endpoints.emplace_back(pairKey(e.v[0], e.v[1]), ei);
     }
 
-    if (e.tri[0] == kNone) {
+    if (e.tri[0] == kNone && e.tri[1] != kNone) {
+      report(out, "edge ", ei, ": tri[0] is empty but tri[1] = ", e.tri[1], " (a border edge keeps its triangle in tri[0])");
+    } else if (e.tri[0] == kNone) {
       report(out, "edge ", ei, ": dangling edge (no triangle)");
     }
     if (e.tri[0] != kNone && e.tri[0] == e.tri[1]) {
@@ -197,6 +199,83 @@ void checkEdges(const ClothMesh& mesh, Problems& out) {
   }
 }
 
+// The corner of triangle t at vertex id, as an index 3 t + k.
+int cornerIndex(const ClothMesh& mesh, int t, int id) {
+  for (int k = 0; k < 3; ++k) {
+    if (mesh.tris[t].v[k] == id) return 3 * t + k;
+  }
+  return kNone;
+}
+
+int findRoot(std::vector<int>& parent, int i) {
+  while (parent[i] != i) i = parent[i] = parent[parent[i]];
+  return i;
+}
+
+// Two triangles sharing a side must agree on its rest length: otherwise the material is stretched
+// across a seam that the mesh does not show. Compared relative to the length, since each
+// triangle's rest coordinates may sit in its own frame.
+constexpr double kRestLengthTolerance = 1e-9;
+
+// Judged from the triangles' sides directly (like checkSharedSides): a vertex is manifold when its
+// triangles form one fan, i.e. the corners at it are connected through the sides they share. Two
+// or more fans meeting only at the vertex make a bow-tie.
+void checkVertexFansAndSeams(const ClothMesh& mesh, Problems& out) {
+  struct Side {
+    std::uint64_t key;
+    int tri;
+  };
+  std::vector<Side> sides;
+  sides.reserve(3 * mesh.tris.size());
+  for (int ti = 0; ti < mesh.triangleCount(); ++ti) {
+    const Triangle& t = mesh.tris[ti];
+    if (!isWellFormed(mesh, t)) continue;
+    for (int k = 0; k < 3; ++k) sides.push_back(Side{pairKey(t.v[k], t.v[(k + 1) % 3]), ti});
+  }
+  std::sort(sides.begin(), sides.end(),
+            [](const Side& p, const Side& q) { return std::tie(p.key, p.tri) < std::tie(q.key, q.tri); });
+
+  std::vector<int> parent(3 * mesh.tris.size());
+  for (size_t i = 0; i < parent.size(); ++i) parent[i] = static_cast<int>(i);
+  for (size_t first = 0; first + 1 < sides.size(); ++first) {
+    const bool pair = sides[first + 1].key == sides[first].key &&
+                      (first + 2 >= sides.size() || sides[first + 2].key != sides[first].key) &&
+                      (first == 0 || sides[first - 1].key != sides[first].key);
+    if (!pair) continue;  // a border side, or a non-manifold edge (reported elsewhere)
+    const int low = static_cast<int>(sides[first].key >> 32);
+    const int high = static_cast<int>(sides[first].key & 0xffffffffu);
+    const int a = sides[first].tri, b = sides[first + 1].tri;
+    for (int id : {low, high}) parent[findRoot(parent, cornerIndex(mesh, a, id))] = findRoot(parent, cornerIndex(mesh, b, id));
+
+    const Triangle& ta = mesh.tris[a];
+    const Triangle& tb = mesh.tris[b];
+    const double lengthA = (ta.rest[cornerIndex(mesh, a, low) % 3] - ta.rest[cornerIndex(mesh, a, high) % 3]).norm();
+    const double lengthB = (tb.rest[cornerIndex(mesh, b, low) % 3] - tb.rest[cornerIndex(mesh, b, high) % 3]).norm();
+    if (std::abs(lengthA - lengthB) > kRestLengthTolerance * std::max(lengthA, lengthB)) {
+      report(out, "triangles ", a, " and ", b, " disagree on the rest length of edge ", low, "-", high, ": ", lengthA,
+             " vs ", lengthB, " m");
+    }
+  }
+
+  // Distinct fans (corner roots) per vertex.
+  std::vector<std::pair<int, int>> vertexRoots;
+  for (int ti = 0; ti < mesh.triangleCount(); ++ti) {
+    if (!isWellFormed(mesh, mesh.tris[ti])) continue;
+    for (int k = 0; k < 3; ++k) vertexRoots.emplace_back(mesh.tris[ti].v[k], findRoot(parent, 3 * ti + k));
+  }
+  std::sort(vertexRoots.begin(), vertexRoots.end());
+  vertexRoots.erase(std::unique(vertexRoots.begin(), vertexRoots.end()), vertexRoots.end());
+  for (size_t first = 0; first < vertexRoots.size();) {
+    size_t last = first + 1;
+    while (last < vertexRoots.size() && vertexRoots[last].first == vertexRoots[first].first) ++last;
+    if (last - first > 1) {
+      report(out, "vertex ", vertexRoots[first].first, ": non-manifold vertex (its triangles form ", last - first,
+             " fans that meet only at it)");
+    }
+    first = last;
+  }
+}
+
 void checkDanglingVertices(const ClothMesh& mesh, Problems& out) {
   std::vector<bool> used(mesh.x.size(), false);
   for (const Triangle& t : mesh.tris) {
@@ -219,6 +298,7 @@ std::vector<std::string> checkMesh(const ClothMesh& mesh) {
   checkDuplicatedTriangles(mesh, problems);
   checkSharedSides(mesh, problems);
   checkEdges(mesh, problems);
+  checkVertexFansAndSeams(mesh, problems);
   checkDanglingVertices(mesh, problems);
   return problems;
 }

@@ -8,7 +8,9 @@ namespace weft {
 
 // Checks that the mesh is a consistent oriented 2-manifold with boundary: every index in range,
 // no duplicated or dangling elements, each edge used by one or two triangles with opposite
-// orientation, Triangle::edge consistent with Edge::tri, positive rest area, finite positions.
+// orientation (a border edge's triangle in tri[0]), each vertex's triangles forming a single fan
+// (no bow-tie), the two triangles of an edge agreeing on its rest length, Triangle::edge
+// consistent with Edge::tri, positive rest area, finite positions, velocities and masses.
 // Returns one human-readable line per problem (empty when valid).
 std::vector<std::string> checkMesh(const ClothMesh& mesh);
 

@@ -1,0 +1,25 @@
+#pragma once
+// What one topology change (a tear, later a cut) did to a mesh, so that the caches built on the
+// mesh (membrane elements, bending hinges, pin tracks, the integrator's matrix pattern) can be
+// patched locally instead of rebuilt. Ids refer to the mesh after the change; nothing is ever
+// removed, so every id listed here is valid.
+#include <utility>
+#include <vector>
+
+namespace weft {
+
+struct TopologyChange {
+  std::vector<int> newVertices;                  // appended vertices (edge-split points and copies), ascending
+  std::vector<std::pair<int, int>> vertexCopies;  // (original, copy) for each vertex separated in two, in order made
+  std::vector<int> changedTriangles;             // triangles whose vertices or rest data changed, and new ones (sorted)
+  std::vector<int> newTriangles;                 // the appended triangles (ascending)
+  std::vector<int> changedEdges;                 // edges whose endpoints or triangles changed, edges of every
+                                                 // changed triangle, and new edges (sorted): the hinges to refresh
+  std::vector<int> newEdges;                     // the appended edges (ascending)
+  std::vector<int> tornEdges;                    // both copies of every edge the tear opened (sorted)
+  std::vector<int> crackEnds;                    // far end of each opened edge, after separation: where the crack
+                                                 // now ends (a tear usually continues from there)
+  std::vector<int> massChangedVertices;          // vertices whose lumped mass or velocity changed (sorted)
+};
+
+}  // namespace weft

@@ -1,0 +1,17 @@
+#pragma once
+// Patching a cloth's caches after a topology change (a tear), without rebuilding them.
+#include "mesh/topology_change.h"
+#include "sim/cloth.h"
+
+namespace weft {
+
+// Brings the cloth's element caches and pins up to date with a change already made to
+// cloth.mesh:
+//   - membranes: remade for the changed and new triangles only;
+//   - hinges: those on changed edges are dropped, and every changed edge that is interior gets a
+//     fresh one (appended), so that the set equals what rebuildElements would build;
+//   - pins: a copy of a pinned vertex joins every PinTrack of its original, at the same start.
+// The integrator's matrix pattern is not touched here: call Integrator::topologyChanged().
+void applyTopologyChange(Cloth& cloth, const TopologyChange& change);
+
+}  // namespace weft
