@@ -25,6 +25,7 @@
 #include "accuracy_study.h"
 #include "command.h"
 #include "contact_bench.h"
+#include "tearing_bench.h"
 #include "machine_info.h"
 #include "material/elasticity.h"
 #include "metrics_writer.h"
@@ -52,6 +53,8 @@ struct BenchOptions {
   AccuracyOptions accuracyOptions;
   bool contact = false;   // time the collision stage instead
   ContactBenchOptions contactOptions;
+  bool tearing = false;   // time the tearing stage instead
+  TearingBenchOptions tearingOptions;
 };
 
 struct Configuration {
@@ -320,7 +323,21 @@ Command addBenchCommand(CLI::App& app) {
       ->check(CLI::Range(4, 1024))
       ->capture_default_str();
   cli->add_option("--contact-csv", options->contactOptions.csv, "Contact benchmark: CSV output file")->capture_default_str();
+  cli->add_flag("--tearing", options->tearing,
+                "Instead of timing sizes, time the tearing stage of a sheet pulled apart, for the thesis' and the dense "
+                "candidate lines, with and without the bound that skips quiet vertices");
+  cli->add_option("--tearing-resolution", options->tearingOptions.resolution, "Tearing benchmark: grid vertices per side")
+      ->check(CLI::Range(4, 1024))
+      ->capture_default_str();
+  cli->add_option("--tearing-csv", options->tearingOptions.csv, "Tearing benchmark: CSV output file")->capture_default_str();
   return {cli, [options] {
+            if (options->tearing) {
+              TearingBenchOptions tearing = options->tearingOptions;
+              tearing.steps = options->steps;
+              tearing.repeats = options->repeats;
+              tearing.threads = options->threads;
+              return runTearingBench(tearing);
+            }
             if (options->contact) {
               ContactBenchOptions contact = options->contactOptions;
               contact.steps = options->steps;

@@ -1,5 +1,7 @@
 #include "frame_obj_writer.h"
 
+#include <utility>
+
 #include <cstdio>
 #include <vector>
 
@@ -26,6 +28,17 @@ std::string clothToObj(const ClothMesh& mesh, const std::string& comment) {
   for (const Triangle& t : mesh.tris) {
     appendLine(out, "f %d/%d %d/%d %d/%d\n", t.v[0] + 1, corner, t.v[1] + 1, corner + 1, t.v[2] + 1, corner + 2);
     corner += 3;
+  }
+  // Torn and cut edges as line elements in their own groups, so a viewer can draw them in red
+  // and green (thesis Figures 4.1-4.2).
+  for (const auto& [group, wanted] : {std::pair{"torn", true}, std::pair{"cut", false}}) {
+    bool opened = false;
+    for (const Edge& e : mesh.edges) {
+      if (!(wanted ? e.torn : e.cut)) continue;
+      if (!opened) appendLine(out, "g %s\n", group);
+      opened = true;
+      appendLine(out, "l %d %d\n", e.v[0] + 1, e.v[1] + 1);
+    }
   }
   return out;
 }

@@ -103,6 +103,29 @@ nlohmann::ordered_json runMetrics(const World& world, double wallSeconds) {
         {"held_vertices", c.heldVertices},
     };
   }
+  if (world.tearingRuns()) {
+    const TearStats& t = world.tearStats();
+    nlohmann::ordered_json log = nlohmann::ordered_json::array();
+    for (const TearRecord& r : world.tearLog()) {
+      log.push_back({{"time_s", r.time},
+                     {"cloth", r.cloth},
+                     {"position", {r.position.x(), r.position.y(), r.position.z()}},
+                     {"rest_position", {r.restPosition.x(), r.restPosition.y()}},
+                     {"direction_deg", r.angleDeg},
+                     {"alpha_deg", r.alphaDeg},
+                     {"from_border", r.ray},
+                     {"separation_n_m", r.separation},
+                     {"required_n_m", r.required},
+                     {"ratio", r.ratio}});
+    }
+    j["tears"] = t.tears;
+    j["tearing"] = {{"stage_ms", stageMs.value("tearing", 0.0)},
+                    {"refused", t.refused},
+                    {"vertices_searched", t.search.vertices},
+                    {"vertices_skipped_by_bound", t.search.skipped},
+                    {"lines_evaluated", t.search.linesEvaluated}};
+    j["tear_log"] = log;
+  }
   j["state_hash"] = hashHex(world.stateHash());
   j["threads"] = scene.solver.threads;
   j["dt"] = scene.solver.dt;

@@ -11,9 +11,10 @@ struct TearingSpec {
   bool skipByBound = true;       // skip vertices whose separation-strength bound cannot reach the table
   int maxTearsPerStep = 1;       // per cloth; the thesis tears one line per step
   double minSpacing = 0.1;       // m (material space): several tears in one step keep this apart
-  double minEdgeLength = 0.002;  // m (material space): no tear creates a shorter edge
-  double minAngleDeg = 12.0;     // no tear creates a triangle with a smaller angle
-  double snapAngleDeg = 8.0;     // a line this close to an existing edge follows the edge
+  // The guards of the mesh surgery (tearing/tear_guards.h says why these values).
+  double minEdgeLength = 0.001;  // m (material space): no tear creates a shorter edge
+  double minAngleDeg = 15.0;     // no tear creates a triangle with a smaller angle
+  double snapAngleDeg = 5.0;     // a line this close to an existing edge follows the edge
 };
 
 }  // namespace weft

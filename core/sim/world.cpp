@@ -17,6 +17,7 @@ struct World::Impl {
   std::vector<std::unique_ptr<Integrator>> integrators;
   std::vector<Obstacle> obstacles;
   std::unique_ptr<ContactStage> contact;
+  std::unique_ptr<TearStage> tearing;
   std::vector<std::vector<Vec3>> startPositions;  // each cloth's positions at the start of the step (contact)
   double time = 0.0;
   long long steps = 0;
@@ -39,6 +40,15 @@ struct World::Impl {
   void saveStartPositions() {
     for (size_t c = 0; c < cloths.size(); ++c) startPositions[c] = cloths[c].mesh.x;
   }
+  // Tears what must tear; whatever depends on a torn cloth's topology is rebuilt at its next use
+  // (the contact stage notices the new counts itself).
+  void tear(double time) {
+    if (!tearing->runs()) return;
+    const std::vector<char> changed = tearing->run(cloths, time, profile);
+    for (size_t c = 0; c < cloths.size(); ++c) {
+      if (changed[c]) integrators[c]->topologyChanged();
+    }
+  }
   bool pinsRun() const {
     for (const Cloth& cloth : cloths)
       if (!cloth.pins.empty()) return true;
@@ -56,6 +66,7 @@ World::World(const Scene& scene) : impl_(std::make_unique<Impl>()) {
     impl_->obstacles.push_back(buildObstacle(scene.obstacles[i], scene.file.string(), static_cast<int>(i)));
   }
   impl_->contact = std::make_unique<ContactStage>(scene);
+  impl_->tearing = std::make_unique<TearStage>(scene);
   impl_->startPositions.resize(impl_->cloths.size());
 }
 
@@ -84,6 +95,7 @@ void World::step() {
     w.contact->applyHeldReactions(w.cloths, w.obstacles, h);
     w.contact->resolve(w.cloths, w.startPositions, w.obstacles, h, w.profile);
     w.endObstacles();
+    w.tear(inputs.time + h);
   }
   ++w.steps;
   w.time = w.steps * w.scene.solver.dt;  // no drift from summing dt
@@ -106,6 +118,9 @@ std::vector<Vec3> World::obstacleVertices(int i) const {
 bool World::contactRuns() const { return impl_->contact->runs(); }
 const ContactStats& World::contactStats() const { return impl_->contact->stats(); }
 const std::vector<SharpContactRecord>& World::sharpContacts() const { return impl_->contact->sharpRecords(); }
+bool World::tearingRuns() const { return impl_->tearing->runs(); }
+const std::vector<TearRecord>& World::tearLog() const { return impl_->tearing->log(); }
+const TearStats& World::tearStats() const { return impl_->tearing->stats(); }
 const StageProfile& World::profile() const { return impl_->profile; }
 const SolverStats& World::solverStats() const { return impl_->stats; }
 
@@ -132,6 +147,7 @@ std::vector<std::string> World::stagesRun() const {
     stages.push_back("contact_ccd");
     stages.push_back("contact_impact_zones");  // only when pass 2 leaves collisions
   }
+  if (w.tearing->runs()) stages.push_back("tearing");
   return stages;
 }
 

@@ -11,6 +11,7 @@
 #include "mesh/cloth_mesh.h"
 #include "scene/scene.h"
 #include "sim/stage_profile.h"
+#include "tearing/tear_stage.h"
 
 namespace weft {
 
@@ -54,6 +55,9 @@ class World {
   bool contactRuns() const;  // the scene has a collision stage
   const ContactStats& contactStats() const;
   const std::vector<SharpContactRecord>& sharpContacts() const;  // of the latest step
+  bool tearingRuns() const;  // some cloth can tear
+  const std::vector<TearRecord>& tearLog() const;  // every tear since the start, in order
+  const TearStats& tearStats() const;
   const StageProfile& profile() const;
   const SolverStats& solverStats() const;
   std::vector<std::string> stagesRun() const;  // names of the stages this scene runs

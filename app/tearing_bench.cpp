@@ -1,0 +1,127 @@
+// The tearing stage's time per step on the sheet-pulled-apart preset at a chosen resolution, once
+// the pull has built up stress and tears run across the sheet: every timed step is one sample,
+// and the median over all repeats is reported beside the whole step's, so the stage's share of a
+// step can be read off.
+#include "tearing_bench.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+#include <thread>
+#include <vector>
+
+#include "command.h"
+#include "machine_info.h"
+#include "scene/scene_json.h"
+#include "sim/world.h"
+#include "util/input_error.h"
+
+namespace weft::app {
+namespace {
+
+namespace fs = std::filesystem;
+
+double stageMs(const StageProfile& profile, const std::string& name) {
+  for (std::size_t k = 0; k < profile.names.size(); ++k) {
+    if (profile.names[k] == name) return profile.totalMs[k];
+  }
+  return 0.0;
+}
+
+double median(std::vector<double> values) {
+  if (values.empty()) return 0.0;
+  std::sort(values.begin(), values.end());
+  const std::size_t n = values.size();
+  return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+struct TearingBenchRow {
+  std::string lines;
+  bool bound = true;
+  int vertices = 0;  // at the end of the last repeat
+  double medianTearingMs = 0.0;
+  double medianStepMs = 0.0;
+  double tearsPerRepeat = 0.0;
+  double skippedShare = 0.0;  // of the vertices looked at
+  double linesPerStep = 0.0;
+};
+
+TearingBenchRow measure(const TearingBenchOptions& options, const std::string& lines, bool bound) {
+  const fs::path scene = fs::path(WEFT_SOURCE_DIR) / "presets" / "scenes" / "sheet-pulled-apart.json";
+  const int n = options.resolution;
+  const std::vector<std::string> overrides{
+      "cloths.0.mesh.grid.resolution=[" + std::to_string(n) + "," + std::to_string(n) + "]",
+      "tearing.candidates=" + lines, std::string("tearing.skip_by_bound=") + (bound ? "true" : "false"),
+      "solver.threads=" + std::to_string(options.threads)};
+  TearingBenchRow row;
+  row.lines = lines;
+  row.bound = bound;
+  std::vector<double> tearingSamples, stepSamples;
+  long long tears = 0, looked = 0, skipped = 0, evaluated = 0;
+  for (int repeat = 0; repeat < options.repeats; ++repeat) {
+    World world(loadScene(scene, overrides));
+    for (int s = 0; s < options.warmup; ++s) world.step();
+    const TearStats before = world.tearStats();
+    for (int s = 0; s < options.steps; ++s) {
+      const double tearingBefore = stageMs(world.profile(), "tearing");
+      const double totalBefore = world.profile().total();
+      world.step();
+      tearingSamples.push_back(stageMs(world.profile(), "tearing") - tearingBefore);
+      stepSamples.push_back(world.profile().total() - totalBefore);
+    }
+    const TearStats& after = world.tearStats();
+    tears += after.tears - before.tears;
+    looked += after.search.vertices - before.search.vertices;
+    skipped += after.search.skipped - before.search.skipped;
+    evaluated += after.search.linesEvaluated - before.search.linesEvaluated;
+    row.vertices = world.cloth(0).vertexCount();
+  }
+  row.medianTearingMs = median(tearingSamples);
+  row.medianStepMs = median(stepSamples);
+  row.tearsPerRepeat = static_cast<double>(tears) / options.repeats;
+  row.skippedShare = looked > 0 ? static_cast<double>(skipped) / looked : 0.0;
+  row.linesPerStep = static_cast<double>(evaluated) / (static_cast<double>(options.steps) * options.repeats);
+  return row;
+}
+
+}  // namespace
+
+int runTearingBench(const TearingBenchOptions& options) {
+  std::vector<TearingBenchRow> rows;
+  try {
+    std::printf("%-7s %-6s %8s %16s %14s %8s %10s %12s %12s\n", "lines", "bound", "vertices", "tearing ms/step",
+                "whole ms/step", "share", "tears", "skipped", "lines/step");
+    for (const char* lines : {"thesis", "dense"}) {
+      for (bool bound : {true, false}) {
+        const TearingBenchRow r = measure(options, lines, bound);
+        std::printf("%-7s %-6s %8d %16.3f %14.3f %7.1f%% %10.1f %11.1f%% %12.0f\n", r.lines.c_str(),
+                    r.bound ? "on" : "off", r.vertices, r.medianTearingMs, r.medianStepMs,
+                    100.0 * r.medianTearingMs / r.medianStepMs, r.tearsPerRepeat, 100.0 * r.skippedShare,
+                    r.linesPerStep);
+        std::fflush(stdout);
+        rows.push_back(r);
+      }
+    }
+  } catch (const InputError& e) {
+    std::cerr << "weft: " << e.what() << "\n";
+    return kExitBadInput;
+  }
+  std::ostringstream csv;
+  csv << "# weft bench --tearing; machine: " << machineName() << "; cpu: " << cpuModel()
+      << "; cores: " << std::thread::hardware_concurrency() << "; threads: " << options.threads
+      << "; git: " << gitDescribe() << "; date: " << utcDate() << "; scene: sheet-pulled-apart, " << options.resolution
+      << "^2, " << options.warmup << " warm-up steps, " << options.steps << " timed steps x " << options.repeats
+      << " repeats\n";
+  csv << "lines,skip_by_bound,vertices,median_tearing_ms_per_step,median_step_ms,tearing_share,tears_per_repeat,"
+         "skipped_vertex_share,lines_evaluated_per_step\n";
+  for (const auto& r : rows) {
+    csv << r.lines << "," << (r.bound ? "true" : "false") << "," << r.vertices << "," << r.medianTearingMs << ","
+        << r.medianStepMs << "," << r.medianTearingMs / r.medianStepMs << "," << r.tearsPerRepeat << ","
+        << r.skippedShare << "," << r.linesPerStep << "\n";
+  }
+  return writeBenchCsv(options.csv, csv.str()) ? kExitOk : kExitFailure;
+}
+
+}  // namespace weft::app

@@ -1,0 +1,20 @@
+#pragma once
+// `weft bench --tearing`: the tearing stage's cost in a sheet pulled apart until it tears, with the
+// thesis' candidate lines and the dense ones, each with and without the bound that skips quiet
+// vertices, against the whole step.
+#include <string>
+
+namespace weft::app {
+
+struct TearingBenchOptions {
+  int resolution = 64;      // grid vertices per side
+  int warmup = 120;         // untimed steps: the pull builds up stress (0.5 s at 1/240 s)
+  int steps = 30;           // timed steps per repeat
+  int repeats = 3;          // the median over every timed step of every repeat is reported
+  int threads = 1;
+  std::string csv = "out/bench/tearing.csv";
+};
+
+int runTearingBench(const TearingBenchOptions& options);
+
+}  // namespace weft::app
