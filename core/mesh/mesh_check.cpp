@@ -115,12 +115,15 @@ void checkDuplicatedTriangles(const ClothMesh& mesh, Problems& out) {
 
 // Looks at the triangles' sides directly (not at `edges`), so that manifoldness and orientation
 // are judged even when the edge list is stale or wrong.
-void checkSharedSides(const ClothMesh& mesh, Problems& out) {
-  struct Side {
-    std::uint64_t key;
-    int tri;
-    int from;  // the side runs from `from` to the other endpoint in the triangle's winding
-  };
+// Every side of every well-formed triangle, sorted by endpoints (then triangle), so that the
+// sides a pair of vertices shares are adjacent.
+struct Side {
+  std::uint64_t key;
+  int tri;
+  int from;  // the side runs from `from` to the other endpoint in the triangle's winding
+};
+
+std::vector<Side> sortedSides(const ClothMesh& mesh) {
   std::vector<Side> sides;
   sides.reserve(3 * mesh.tris.size());
   for (int ti = 0; ti < mesh.triangleCount(); ++ti) {
@@ -130,6 +133,11 @@ void checkSharedSides(const ClothMesh& mesh, Problems& out) {
   }
   std::sort(sides.begin(), sides.end(),
             [](const Side& p, const Side& q) { return std::tie(p.key, p.tri) < std::tie(q.key, q.tri); });
+  return sides;
+}
+
+void checkSharedSides(const ClothMesh& mesh, Problems& out) {
+  const std::vector<Side> sides = sortedSides(mesh);
 
   for (size_t first = 0; first < sides.size();) {
     size_t last = first + 1;
@@ -221,19 +229,7 @@ constexpr double kRestLengthTolerance = 1e-9;
 // triangles form one fan, i.e. the corners at it are connected through the sides they share. Two
 // or more fans meeting only at the vertex make a bow-tie.
 void checkVertexFansAndSeams(const ClothMesh& mesh, Problems& out) {
-  struct Side {
-    std::uint64_t key;
-    int tri;
-  };
-  std::vector<Side> sides;
-  sides.reserve(3 * mesh.tris.size());
-  for (int ti = 0; ti < mesh.triangleCount(); ++ti) {
-    const Triangle& t = mesh.tris[ti];
-    if (!isWellFormed(mesh, t)) continue;
-    for (int k = 0; k < 3; ++k) sides.push_back(Side{pairKey(t.v[k], t.v[(k + 1) % 3]), ti});
-  }
-  std::sort(sides.begin(), sides.end(),
-            [](const Side& p, const Side& q) { return std::tie(p.key, p.tri) < std::tie(q.key, q.tri); });
+  const std::vector<Side> sides = sortedSides(mesh);
 
   std::vector<int> parent(3 * mesh.tris.size());
   for (size_t i = 0; i < parent.size(); ++i) parent[i] = static_cast<int>(i);

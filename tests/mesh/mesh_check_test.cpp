@@ -218,5 +218,59 @@ TEST(MeshCheck, SurvivesAnEdgeWithEndpointsAndTrianglesOutOfRange) {
   EXPECT_TRUE(reports(mesh, "edge 0: tri[1] = -7 out of range"));
 }
 
+// Two triangles that share only vertex 0: each edge is fine, but the vertex has two fans.
+TEST(MeshCheck, ReportsABowTieVertex) {
+  ClothMesh mesh;
+  for (int i = 0; i < 5; ++i) mesh.addVertex(Vec3(i, 0, 0));
+  Triangle right, left;
+  right.v = {0, 1, 2};
+  right.rest = {Vec2(0, 0), Vec2(1, 0), Vec2(1, 1)};
+  left.v = {0, 3, 4};
+  left.rest = {Vec2(0, 0), Vec2(-1, 0), Vec2(-1, -1)};
+  mesh.tris = {right, left};
+  buildEdges(mesh);
+  const std::vector<std::string> problems = checkMesh(mesh);
+  ASSERT_EQ(problems.size(), 1u) << problems.front();
+  EXPECT_TRUE(reports(mesh, "vertex 0: non-manifold vertex (its triangles form 2 fans"));
+}
+
+// Half a tear: an edge opened (two border copies) but its vertices not separated. The triangles
+// still share the side, so it is the duplicated edge that gives it away.
+TEST(MeshCheck, ReportsAnOpenedEdgeWhoseVerticesWereNotSeparated) {
+  ClothMesh mesh = smallGrid();
+  int opened = kNone;
+  for (int e = 0; e < mesh.edgeCount(); ++e) {
+    if (mesh.edges[e].v == std::array<int, 2>{1, 5}) opened = e;
+  }
+  ASSERT_NE(opened, kNone);
+  Edge copy = mesh.edges[opened];
+  copy.tri = {copy.tri[1], kNone};
+  mesh.edges[opened].tri[1] = kNone;
+  for (int& e : mesh.tris[copy.tri[0]].edge) {
+    if (e == opened) e = mesh.edgeCount();
+  }
+  mesh.edges.push_back(copy);
+  EXPECT_TRUE(reports(mesh, "duplicated edge"));
+}
+
+TEST(MeshCheck, ReportsABorderEdgeWithItsTriangleInTheSecondSlot) {
+  ClothMesh mesh = smallGrid();
+  int boundary = kNone;
+  for (int e = 0; e < mesh.edgeCount() && boundary == kNone; ++e) {
+    if (mesh.edges[e].isBoundary()) boundary = e;
+  }
+  ASSERT_NE(boundary, kNone);
+  std::swap(mesh.edges[boundary].tri[0], mesh.edges[boundary].tri[1]);
+  EXPECT_TRUE(reports(mesh, "edge " + std::to_string(boundary) + ": tri[0] is empty"));
+}
+
+TEST(MeshCheck, ReportsTrianglesThatDisagreeOnAnEdgesRestLength) {
+  ClothMesh mesh = smallGrid();
+  // Triangles 0 and 1 share the first cell's diagonal, corners 0 and 2 of triangle 0 (a-b-c, a-c-d).
+  // Moving corner 0 along its other side keeps triangle 0 valid but lengthens the diagonal there.
+  mesh.tris[0].rest[0] += 0.1 * (mesh.tris[0].rest[0] - mesh.tris[0].rest[1]);
+  EXPECT_TRUE(reports(mesh, "triangles 0 and 1 disagree on the rest length"));
+}
+
 }  // namespace
 }  // namespace weft

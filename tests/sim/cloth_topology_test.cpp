@@ -1,0 +1,70 @@
+#include "sim/cloth_topology.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "mesh/grid.h"
+#include "tearing/tear_mesh.h"
+
+namespace weft {
+namespace {
+
+Cloth gridCloth() {
+  Cloth cloth;
+  GridSpec spec;
+  spec.resolutionX = 5;
+  spec.resolutionY = 5;
+  cloth.mesh = makeGrid(spec);
+  assignLumpedMasses(cloth.mesh, cloth.material.areaDensity);
+  rebuildElements(cloth);
+  return cloth;
+}
+
+bool hasHingeOn(const Cloth& cloth, int edge) {
+  return std::any_of(cloth.hinges.begin(), cloth.hinges.end(), [edge](const BendingHinge& h) { return h.edge == edge; });
+}
+
+TEST(ClothTopology, TornEdgesLoseTheirHingesAndNewTrianglesGetMembranes) {
+  Cloth cloth = gridCloth();
+  TopologyChange change;
+  ASSERT_TRUE(tearThroughVertex(cloth.mesh, 12, Vec2(1, 0.3), TearGuards{}, cloth.material.areaDensity, change));
+  applyTopologyChange(cloth, change);
+  ASSERT_EQ(cloth.membranes.size(), cloth.mesh.tris.size());
+  for (int t : change.newTriangles) EXPECT_EQ(cloth.membranes[t].v, cloth.mesh.tris[t].v);
+  for (int e : change.tornEdges) EXPECT_FALSE(hasHingeOn(cloth, e));
+  // The spokes from the split points into the neighbours are interior and new: they bend.
+  int newInteriorEdges = 0;
+  for (int e : change.newEdges) {
+    if (!cloth.mesh.edges[e].isBoundary()) {
+      ++newInteriorEdges;
+      EXPECT_TRUE(hasHingeOn(cloth, e)) << e;
+    }
+  }
+  EXPECT_GT(newInteriorEdges, 0);
+  EXPECT_EQ(cloth.hinges.size(), buildBendingHinges(cloth.mesh, cloth.weftAngleRad).size());
+}
+
+TEST(ClothTopology, ACopyOfAPinnedVertexJoinsItsTrackAtTheSameStart) {
+  Cloth cloth = gridCloth();
+  PinTrack track;
+  track.vertices = {2, 12, 20};
+  for (int v : track.vertices) {
+    track.start.push_back(cloth.mesh.x[v] + Vec3(0, 0, v));  // distinct starts, to see which one is copied
+    cloth.mesh.pinned[v] = 1;
+  }
+  cloth.pins.push_back(track);
+  TopologyChange change;
+  ASSERT_TRUE(tearThroughVertex(cloth.mesh, 12, Vec2(0, 1), TearGuards{}, cloth.material.areaDensity, change));
+  applyTopologyChange(cloth, change);
+  ASSERT_EQ(change.vertexCopies.size(), 1u);
+  const int copy = change.vertexCopies[0].second;
+  const PinTrack& after = cloth.pins[0];
+  EXPECT_EQ(after.vertices, (std::vector<int>{2, 12, 20, copy}));
+  ASSERT_EQ(after.start.size(), 4u);
+  EXPECT_EQ(after.start[3], after.start[1]);
+  EXPECT_EQ(cloth.mesh.pinned[copy], 1);
+}
+
+}  // namespace
+}  // namespace weft

@@ -1,0 +1,232 @@
+#include "tearing/tear_mesh.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "mesh/grid.h"
+#include "mesh/mesh_check.h"
+#include "support/mesh_helpers.h"
+#include "support/tear_checks.h"
+#include "tearing/vertex_fan.h"
+
+namespace weft {
+namespace {
+
+constexpr double kDensity = 0.2;  // kg/m^2
+
+// An n x n grid over the unit square with masses and random velocities.
+ClothMesh grid(int n, unsigned seed = 1) {
+  GridSpec spec;
+  spec.resolutionX = n;
+  spec.resolutionY = n;
+  ClothMesh mesh = makeGrid(spec);
+  assignLumpedMasses(mesh, kDensity);
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<double> speed(-1.0, 1.0);
+  for (Vec3& v : mesh.v) v = Vec3(speed(random), speed(random), speed(random));
+  return mesh;
+}
+
+Vec2 atDegrees(double deg) { return Vec2(std::cos(degToRad(deg)), std::sin(degToRad(deg))); }
+
+::testing::AssertionResult valid(const ClothMesh& mesh) {
+  const std::vector<std::string> problems = checkMesh(mesh);
+  if (problems.empty()) return ::testing::AssertionSuccess();
+  auto failure = ::testing::AssertionFailure() << problems.size() << " problem(s):";
+  for (size_t i = 0; i < std::min<size_t>(problems.size(), 5); ++i) failure << "\n  " << problems[i];
+  return failure;
+}
+
+// What a tear through the centre of a 5 x 5 grid (vertex 12) changes in the counts.
+struct Growth {
+  int vertices, triangles, edges, boundaryEdges, tornEdges;
+};
+
+void expectTearGrows(const Vec2& direction, const Growth& expected) {
+  ClothMesh mesh = grid(5);
+  const ClothMesh before = mesh;
+  TopologyChange change;
+  ASSERT_TRUE(tearThroughVertex(mesh, 12, direction, TearGuards{}, kDensity, change));
+  EXPECT_TRUE(valid(mesh));
+  EXPECT_EQ(mesh.vertexCount() - before.vertexCount(), expected.vertices);
+  EXPECT_EQ(mesh.triangleCount() - before.triangleCount(), expected.triangles);
+  EXPECT_EQ(mesh.edgeCount() - before.edgeCount(), expected.edges);
+  EXPECT_EQ(test::boundaryEdgeCount(mesh) - test::boundaryEdgeCount(before), expected.boundaryEdges);
+  EXPECT_EQ(test::tornEdgeCount(mesh), expected.tornEdges);
+  EXPECT_EQ(static_cast<int>(change.tornEdges.size()), expected.tornEdges);
+  for (int e : change.tornEdges) {
+    EXPECT_TRUE(mesh.edges[e].torn);
+    EXPECT_TRUE(mesh.edges[e].isBoundary());
+  }
+  ASSERT_EQ(change.vertexCopies.size(), 1u);
+  EXPECT_EQ(change.vertexCopies[0].first, 12);
+  EXPECT_EQ(test::connectedComponents(mesh), 1);  // an interior crack opens nothing yet
+}
+
+// Along a grid edge and along a cell diagonal the tear follows existing edges: the vertex is
+// copied and the two cut edges are doubled, all four copies becoming border.
+TEST(TearMesh, InteriorVertexAlongAnEdgeDirection) { expectTearGrows(Vec2(1, 0), {1, 0, 2, 4, 4}); }
+TEST(TearMesh, InteriorVertexAlongADiagonal) { expectTearGrows(Vec2(1, 1), {1, 0, 2, 4, 4}); }
+
+// At 17 degrees both rays cross a triangle: each splits an opposite side (one new vertex, two
+// triangles become four, three new edges), then the vertex is copied and two edges doubled.
+TEST(TearMesh, InteriorVertexAtAnArbitraryAngle) { expectTearGrows(atDegrees(17), {3, 4, 8, 4, 4}); }
+
+TEST(TearMesh, TheSplitPointLiesOnTheTearLineInEveryTriangle) {
+  ClothMesh mesh = grid(5);
+  const Vec2 centre(0.5, 0.5);  // vertex 12 of the unit 5 x 5 grid
+  const Vec2 direction = atDegrees(17);
+  TopologyChange change;
+  ASSERT_TRUE(tearThroughVertex(mesh, 12, direction, TearGuards{}, kDensity, change));
+  const std::vector<int> splitPoints(change.newVertices.begin(), change.newVertices.end() - 1);  // last is the copy
+  ASSERT_EQ(splitPoints.size(), 2u);
+  // Where each ray leaves its triangle: on the grid lines x = 0.75 and x = 0.25.
+  const std::array<Vec2, 2> expected{centre + direction * (0.25 / direction.x()), centre - direction * (0.25 / direction.x())};
+  for (int i = 0; i < 2; ++i) {
+    int uses = 0;
+    for (const Triangle& t : mesh.tris) {
+      const int k = cornerOf(t, splitPoints[i]);
+      if (k == kNone) continue;
+      ++uses;
+      EXPECT_NEAR(cross2(direction, t.rest[k] - centre), 0.0, 1e-15);
+      EXPECT_NEAR((t.rest[k] - expected[i]).norm(), 0.0, 1e-15);
+    }
+    EXPECT_EQ(uses, 4);  // two pieces on each side of the split edge
+    // The position interpolates the endpoints' like the rest coordinates (flat grid: the same).
+    EXPECT_NEAR((mesh.x[splitPoints[i]].head<2>() - expected[i]).norm(), 0.0, 1e-15);
+  }
+}
+
+TEST(TearMesh, KeepsMassMomentumAndRestArea) {
+  for (double deg : {0.0, 17.0, 45.0, 62.0, 133.0}) {
+    ClothMesh mesh = grid(6, 7);
+    const double mass = test::totalMass(mesh);
+    const Vec3 momentum = test::totalMomentum(mesh);
+    const double area = test::totalRestArea(mesh);
+    TopologyChange change;
+    ASSERT_TRUE(tearThroughVertex(mesh, 14, atDegrees(deg), TearGuards{}, kDensity, change)) << deg;
+    EXPECT_NEAR(test::totalMass(mesh), mass, 1e-12 * mass);
+    EXPECT_LE((test::totalMomentum(mesh) - momentum).norm(), 1e-12 * test::momentumScale(mesh));
+    EXPECT_NEAR(test::totalRestArea(mesh), area, 1e-12 * area);
+    // And the lumped masses are what a from-scratch assignment gives.
+    ClothMesh reassigned = mesh;
+    assignLumpedMasses(reassigned, kDensity);
+    for (int i = 0; i < mesh.vertexCount(); ++i) EXPECT_NEAR(mesh.mass[i], reassigned.mass[i], 1e-15) << i;
+  }
+}
+
+// A separated vertex's copies keep the velocity; an inserted vertex's velocity is a positive-weight
+// average of its neighbours' (inside their bounding box).
+TEST(TearMesh, NewVerticesTakeConsistentVelocities) {
+  ClothMesh mesh = grid(5, 3);
+  const ClothMesh before = mesh;
+  TopologyChange change;
+  ASSERT_TRUE(tearThroughVertex(mesh, 12, atDegrees(17), TearGuards{}, kDensity, change));
+  for (const auto& [original, copy] : change.vertexCopies) EXPECT_EQ(mesh.v[copy], mesh.v[original]);
+  Vec3 lo = before.v[0], hi = before.v[0];
+  for (const Vec3& v : before.v) {
+    lo = lo.cwiseMin(v);
+    hi = hi.cwiseMax(v);
+  }
+  for (int q : change.newVertices) {
+    EXPECT_TRUE((mesh.v[q].array() >= lo.array() - 1e-12).all() && (mesh.v[q].array() <= hi.array() + 1e-12).all());
+  }
+}
+
+// Tears from the left border along y = 0.5, each from the crack's current end, until the cloth
+// falls in two.
+void tearAcross(ClothMesh& mesh, int startVertex, const Vec2& direction, int maxTears) {
+  int tip = startVertex;
+  for (int i = 0; i < maxTears && test::connectedComponents(mesh) == 1; ++i) {
+    TopologyChange change;
+    ASSERT_TRUE(tearThroughVertex(mesh, tip, direction, TearGuards{}, kDensity, change)) << "tear " << i;
+    ASSERT_TRUE(valid(mesh)) << "tear " << i;
+    ASSERT_EQ(change.crackEnds.size(), 1u);
+    tip = change.crackEnds[0];
+  }
+}
+
+TEST(TearMesh, AStraightTearAcrossTheGridOpensIt) {
+  ClothMesh mesh = grid(9);
+  const double mass = test::totalMass(mesh);
+  tearAcross(mesh, 4 * 9, Vec2(1, 0), 8);
+  EXPECT_EQ(test::connectedComponents(mesh), 2);
+  EXPECT_EQ(test::tornEdgeCount(mesh), 16);  // 8 edges, two copies each
+  EXPECT_EQ(mesh.vertexCount(), 81 + 9);     // every vertex on the line copied once
+  EXPECT_NEAR(test::totalMass(mesh), mass, 1e-12 * mass);
+}
+
+TEST(TearMesh, ASlantedTearAcrossTheGridOpensIt) {
+  ClothMesh mesh = grid(9);
+  tearAcross(mesh, 3 * 9, atDegrees(17), 40);
+  EXPECT_EQ(test::connectedComponents(mesh), 2);
+}
+
+TEST(TearMesh, ADirectionWithinTheSnapAngleFollowsTheEdge) {
+  TearGuards guards;
+  guards.minAngleDeg = 1.0;
+  guards.snapAngleDeg = 10.0;
+  ClothMesh mesh = grid(5);
+  TopologyChange change;
+  ASSERT_TRUE(tearThroughVertex(mesh, 12, atDegrees(7), guards, kDensity, change));
+  EXPECT_EQ(change.newVertices.size(), 1u);  // only the copy: no split point
+  EXPECT_EQ(mesh.triangleCount(), 32);
+
+  guards.snapAngleDeg = 5.0;  // now 7 degrees crosses
+  mesh = grid(5);
+  ASSERT_TRUE(tearThroughVertex(mesh, 12, atDegrees(7), guards, kDensity, change));
+  EXPECT_EQ(change.newVertices.size(), 3u);
+  EXPECT_TRUE(valid(mesh));
+}
+
+TEST(TearMesh, ACrossingThatWouldMakeASliverFollowsTheEdge) {
+  TearGuards guards;
+  guards.snapAngleDeg = 0.0;
+  guards.minAngleDeg = 20.0;  // 17 degrees at the vertex is too thin
+  ClothMesh mesh = grid(5);
+  TopologyChange change;
+  ASSERT_TRUE(tearThroughVertex(mesh, 12, atDegrees(17), guards, kDensity, change));
+  EXPECT_EQ(change.newVertices.size(), 1u);
+
+  guards.minAngleDeg = 1.0;
+  guards.minEdgeLength = 0.1;  // the split point would be 0.08 m from a grid vertex: too close
+  mesh = grid(5);
+  ASSERT_TRUE(tearThroughVertex(mesh, 12, atDegrees(17), guards, kDensity, change));
+  EXPECT_EQ(change.newVertices.size(), 1u);
+  EXPECT_TRUE(valid(mesh));
+}
+
+TEST(TearMesh, ARayOutOfABorderVertexsFanIsRefusedAndChangesNothing) {
+  ClothMesh mesh = grid(5);
+  const ClothMesh before = mesh;
+  TopologyChange change;
+  EXPECT_FALSE(tearThroughVertex(mesh, 2, Vec2(0.3, -1), TearGuards{}, kDensity, change));  // bottom border, pointing down
+  EXPECT_FALSE(tearThroughVertex(mesh, 2, Vec2(1, 0), TearGuards{}, kDensity, change));     // along the border
+  EXPECT_FALSE(tearThroughVertex(mesh, 12, Vec2(0, 0), TearGuards{}, kDensity, change));    // no direction
+  EXPECT_TRUE(change.newVertices.empty());
+  test::expectSameMesh(mesh, before);
+}
+
+TEST(TearMesh, ABorderVertexTearsAlongOneRay) {
+  ClothMesh mesh = grid(5);
+  TopologyChange change;
+  ASSERT_TRUE(tearThroughVertex(mesh, 2, Vec2(0, 1), TearGuards{}, kDensity, change));
+  EXPECT_TRUE(valid(mesh));
+  EXPECT_EQ(change.tornEdges.size(), 2u);
+  EXPECT_EQ(mesh.vertexCount(), 26);
+  EXPECT_EQ(change.crackEnds, std::vector<int>{7});
+}
+
+TEST(TearMesh, PinnedVerticesPassTheFlagToTheirCopies) {
+  ClothMesh mesh = grid(5);
+  mesh.pinned[12] = 1;
+  TopologyChange change;
+  ASSERT_TRUE(tearThroughVertex(mesh, 12, Vec2(1, 0), TearGuards{}, kDensity, change));
+  ASSERT_EQ(change.vertexCopies.size(), 1u);
+  EXPECT_EQ(mesh.pinned[change.vertexCopies[0].second], 1);
+}
+
+}  // namespace
+}  // namespace weft
