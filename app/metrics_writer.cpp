@@ -119,7 +119,11 @@ nlohmann::ordered_json runMetrics(const World& world, double wallSeconds) {
                      {"ratio", r.ratio}});
     }
     j["tears"] = t.tears;
-    j["tearing"] = {{"stage_ms", stageMs.value("tearing", 0.0)},
+    double tearingMs = 0.0;
+    for (std::size_t k = 0; k < profile.names.size(); ++k) {
+      if (profile.names[k].rfind("tear_", 0) == 0) tearingMs += profile.totalMs[k];
+    }
+    j["tearing"] = {{"stage_ms", tearingMs},
                     {"refused", t.refused},
                     {"vertices_searched", t.search.vertices},
                     {"vertices_skipped_by_bound", t.search.skipped},

@@ -23,11 +23,13 @@ namespace {
 
 namespace fs = std::filesystem;
 
-double stageMs(const StageProfile& profile, const std::string& name) {
+// The tearing stages: tear_stress, tear_search, tear_surgery.
+double tearingMs(const StageProfile& profile) {
+  double ms = 0.0;
   for (std::size_t k = 0; k < profile.names.size(); ++k) {
-    if (profile.names[k] == name) return profile.totalMs[k];
+    if (profile.names[k].rfind("tear_", 0) == 0) ms += profile.totalMs[k];
   }
-  return 0.0;
+  return ms;
 }
 
 double median(std::vector<double> values) {
@@ -65,10 +67,10 @@ TearingBenchRow measure(const TearingBenchOptions& options, const std::string& l
     for (int s = 0; s < options.warmup; ++s) world.step();
     const TearStats before = world.tearStats();
     for (int s = 0; s < options.steps; ++s) {
-      const double tearingBefore = stageMs(world.profile(), "tearing");
+      const double tearingBefore = tearingMs(world.profile());
       const double totalBefore = world.profile().total();
       world.step();
-      tearingSamples.push_back(stageMs(world.profile(), "tearing") - tearingBefore);
+      tearingSamples.push_back(tearingMs(world.profile()) - tearingBefore);
       stepSamples.push_back(world.profile().total() - totalBefore);
     }
     const TearStats& after = world.tearStats();

@@ -147,7 +147,11 @@ std::vector<std::string> World::stagesRun() const {
     stages.push_back("contact_ccd");
     stages.push_back("contact_impact_zones");  // only when pass 2 leaves collisions
   }
-  if (w.tearing->runs()) stages.push_back("tearing");
+  if (w.tearing->runs()) {
+    stages.push_back("tear_stress");
+    stages.push_back("tear_search");
+    stages.push_back("tear_surgery");  // only in steps that tear
+  }
   return stages;
 }
 

@@ -9,29 +9,39 @@ namespace {
 
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
 
-// The integral of the outward unit normal n(theta) = (cos, sin) from 0 to theta, up to a constant.
-Vec2 g(double theta) { return Vec2(std::sin(theta), -std::cos(theta)); }
-
-// `angle` moved by whole turns into [from, from + 2 pi).
+// `angle` moved by whole turns into [from, from + 2 pi). The angles met here lie within a few
+// turns of each other, so a few additions are cheaper than std::fmod (the inner loop's cost).
 double wrapFrom(double angle, double from) {
-  double a = std::fmod(angle - from, kTwoPi);
-  if (a < 0.0) a += kTwoPi;
-  return from + a;
+  if (!std::isfinite(angle) || !std::isfinite(from)) return from;
+  double a = angle;
+  while (a < from) a += kTwoPi;
+  while (a >= from + kTwoPi) a -= kTwoPi;
+  return a;
 }
 
+Vec2 gAt(double theta) { return Vec2(std::sin(theta), -std::cos(theta)); }
+
 // The traction force on the vertex from the part of the fan inside the arc [from, from + length]
-// (length <= 2 pi): each sector's overlap with the arc, at most two pieces when it wraps past the
-// arc's start.
-Vec2 arcForce(const VertexFan& fan, double from, double length) {
+// (length <= 2 pi), with g at the arc's ends given: each sector's overlap with the arc is at most
+// two pieces (the second when it wraps past the arc's start), and each piece ends at a sector edge
+// or at an arc end, where g is known.
+Vec2 arcForce(const VertexFan& fan, double from, double length, const Vec2& gFrom, const Vec2& gTo) {
   Vec2 force = Vec2::Zero();
   const double to = from + length;
   for (const FanSector& sector : fan.sectors) {
     const double a = wrapFrom(sector.start, from);
     const double b = a + sector.span;
-    if (a < to) force += sector.stress * (g(std::min(b, to)) - g(a));
-    if (b > from + kTwoPi) force += sector.stress * (g(std::min(b - kTwoPi, to)) - g(from));
+    if (a < to) force += sector.stress * ((b <= to ? sector.gEnd : gTo) - sector.gStart);
+    if (b - kTwoPi > from) force += sector.stress * ((b - kTwoPi <= to ? sector.gEnd : gTo) - gFrom);
   }
   return force;
+}
+
+// The spectral norm of a symmetric 2x2 tensor: its largest absolute eigenvalue.
+double spectralNorm(const Mat2& s) {
+  const double mean = 0.5 * (s(0, 0) + s(1, 1));
+  const double half = 0.5 * (s(0, 0) - s(1, 1));
+  return std::abs(mean) + std::sqrt(half * half + s(0, 1) * s(0, 1));
 }
 
 // Eq. 2.70-2.71 for the two sides' forces.
@@ -44,19 +54,43 @@ double balancedPull(const Vec2& q1, const Vec2& q2) {
 
 }  // namespace
 
-VertexFan vertexFan(const ClothMesh& mesh, int vertex, const std::vector<int>& around,
-                    const std::vector<Mat2>& triangleStress) {
-  VertexFan fan;
-  fan.sectors.reserve(around.size());
+FanSector cornerSector(const Triangle& tri, int k) {
+  const Vec2 first = tri.rest[(k + 1) % 3] - tri.rest[k];
+  const Vec2 second = tri.rest[(k + 2) % 3] - tri.rest[k];
+  FanSector sector;
+  sector.start = std::atan2(first.y(), first.x());
+  // Counter-clockwise triangles: the second edge is the first turned by the corner's angle.
+  sector.span = std::atan2(first.x() * second.y() - first.y() * second.x(), first.dot(second));
+  sector.gStart = normalIntegral(first.normalized());
+  sector.gEnd = normalIntegral(second.normalized());
+  return sector;
+}
+
+void updateTriangleCorners(const ClothMesh& mesh, const std::vector<int>& triangles, std::vector<TriangleCorners>& corners) {
+  corners.resize(mesh.tris.size());
+  for (int t : triangles) {
+    for (int k = 0; k < 3; ++k) corners[t][k] = cornerSector(mesh.tris[t], k);
+  }
+}
+
+std::vector<TriangleCorners> triangleCorners(const ClothMesh& mesh) {
+  std::vector<int> all(mesh.tris.size());
+  for (std::size_t t = 0; t < all.size(); ++t) all[t] = static_cast<int>(t);
+  std::vector<TriangleCorners> corners;
+  updateTriangleCorners(mesh, all, corners);
+  return corners;
+}
+
+void vertexFan(const ClothMesh& mesh, int vertex, std::span<const int> around,
+               const std::vector<TriangleCorners>& corners, const std::vector<Mat2>& triangleStress, VertexFan& fan) {
+  fan.sectors.clear();
+  fan.closed = true;
+  fan.openStart = 0.0;
+  fan.openSpan = 0.0;
   for (int t : around) {
     const Triangle& tri = mesh.tris[t];
     const int k = tri.v[0] == vertex ? 0 : tri.v[1] == vertex ? 1 : 2;
-    const Vec2 first = tri.rest[(k + 1) % 3] - tri.rest[k];
-    const Vec2 second = tri.rest[(k + 2) % 3] - tri.rest[k];
-    FanSector sector;
-    sector.start = std::atan2(first.y(), first.x());
-    // Counter-clockwise triangles: the second edge is the first turned by the corner's angle.
-    sector.span = std::atan2(first.x() * second.y() - first.y() * second.x(), first.dot(second));
+    FanSector sector = corners[t][k];
     sector.stress = triangleStress[t];
     fan.sectors.push_back(sector);
     // The corner's first edge runs from v[k] to v[k+1] (Triangle::edge[k]); on a boundary, the
@@ -68,34 +102,57 @@ VertexFan vertexFan(const ClothMesh& mesh, int vertex, const std::vector<int>& a
     fan.openSpan += sector.span;
   }
   if (fan.closed) fan.openSpan = kTwoPi;
-  return fan;
+}
+
+FanSector makeSector(double start, double span, const Mat2& stress) {
+  FanSector sector;
+  sector.start = start;
+  sector.span = span;
+  sector.gStart = gAt(start);
+  sector.gEnd = gAt(start + span);
+  sector.stress = stress;
+  return sector;
 }
 
 double separationStrength(const VertexFan& fan, double angle) {
+  const Vec2 gLine = gAt(angle);
   if (fan.closed) {
-    // Side 1 lies counter-clockwise of the line's direction, side 2 clockwise (Figure 2.9).
-    const Vec2 q1 = arcForce(fan, angle, std::numbers::pi);
-    const Vec2 q2 = arcForce(fan, angle + std::numbers::pi, std::numbers::pi);
+    // Side 1 lies counter-clockwise of the line's direction, side 2 clockwise (Figure 2.9);
+    // g(angle + pi) = -g(angle).
+    const Vec2 q1 = arcForce(fan, angle, std::numbers::pi, gLine, -gLine);
+    const Vec2 q2 = arcForce(fan, angle + std::numbers::pi, std::numbers::pi, -gLine, gLine);
     return 0.5 * balancedPull(q1, q2);
   }
   const double ray = wrapFrom(angle, fan.openStart);
   const double before = std::min(ray - fan.openStart, fan.openSpan);
-  const Vec2 q1 = arcForce(fan, fan.openStart, before);
-  const Vec2 q2 = arcForce(fan, fan.openStart + before, fan.openSpan - before);
+  const Vec2 gStart = gAt(fan.openStart), gEnd = gAt(fan.openStart + fan.openSpan);
+  const Vec2 q1 = arcForce(fan, fan.openStart, before, gStart, gLine);
+  const Vec2 q2 = arcForce(fan, fan.openStart + before, fan.openSpan - before, gLine, gEnd);
   return balancedPull(q1, q2);
 }
 
 double separationStrengthBound(const VertexFan& fan) {
-  double sum = 0.0;
+  // sigma+ is positive semi-definite: its spectral norm is its largest principal stress.
+  double weighted = 0.0, totalSpan = 0.0;
+  Mat2 mean = Mat2::Zero();
   for (const FanSector& sector : fan.sectors) {
-    // The largest principal value of a 2x2 symmetric tensor: mean + radius of Mohr's circle.
-    const Mat2& s = sector.stress;
-    const double mean = 0.5 * (s(0, 0) + s(1, 1));
-    const double radius = std::hypot(0.5 * (s(0, 0) - s(1, 1)), s(0, 1));
-    sum += std::max(0.0, mean + radius) * sector.span;
+    weighted += spectralNorm(sector.stress) * sector.span;
+    mean += sector.stress * sector.span;
+    totalSpan += sector.span;
   }
-  // |q1| + |q2| <= sum; zeta <= min(|q1|, |q2|) <= sum / 2, halved again at an interior vertex.
-  return (fan.closed ? 0.25 : 0.5) * sum;
+  if (!(totalSpan > 0.0)) return 0.0;
+  mean /= totalSpan;
+  double deviation = 0.0;  // D
+  for (const FanSector& sector : fan.sectors) deviation += spectralNorm(sector.stress - mean) * sector.span;
+  // First bound: |q1| + |q2| <= weighted; zeta <= min(|q1|, |q2|) <= weighted / 2, halved again
+  // at an interior vertex.
+  const double byArcs = (fan.closed ? 0.25 : 0.5) * weighted;
+  // Second bound: min(|q1|, |q2|) <= |S| max chord + D / 2. A closed fan's sides are half circles
+  // (chord 2, then zeta is halved); an open fan of angle F split anywhere has a side whose chord
+  // is at most 2 sin(F / 4).
+  const double byMean = fan.closed ? spectralNorm(mean) + 0.25 * deviation
+                                   : 2.0 * std::sin(0.25 * fan.openSpan) * spectralNorm(mean) + 0.5 * deviation;
+  return std::min(byArcs, byMean);
 }
 
 }  // namespace weft

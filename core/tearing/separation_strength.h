@@ -20,6 +20,8 @@
 // at an interior vertex) so that it equals |sigma n|, the traction across the line, in both cases:
 // a tear table's strength is then the critical traction across a line, in N/m (tear_table.h).
 // ARCSim does the same (halving, then doubling at border and crack vertices).
+#include <array>
+#include <span>
 #include <vector>
 
 #include "mesh/cloth_mesh.h"
@@ -31,8 +33,17 @@ namespace weft {
 struct FanSector {
   double start = 0.0;  // angle of the corner's first edge (rad, material space)
   double span = 0.0;   // counter-clockwise opening angle to its second edge, in (0, pi)
+  Vec2 gStart = Vec2::Zero();  // g at the first and second edge (no trigonometry per line)
+  Vec2 gEnd = Vec2::Zero();
   Mat2 stress = Mat2::Zero();  // the triangle's tensile stress sigma+, material frame (N/m)
 };
+
+// g(theta) = (sin theta, -cos theta), the integral of the outward normal, from the unit direction
+// (cos theta, sin theta).
+inline Vec2 normalIntegral(const Vec2& unitDirection) { return Vec2(unitDirection.y(), -unitDirection.x()); }
+
+// A sector from the angles alone (tests); vertexFan builds them from the edges.
+FanSector makeSector(double start, double span, const Mat2& stress);
 
 struct VertexFan {
   std::vector<FanSector> sectors;
@@ -43,8 +54,17 @@ struct VertexFan {
 
 // The fan of `vertex` (its incident triangles `around`) with the per-triangle stresses. A fan
 // that does not close is open from the sector whose first edge lies on a boundary.
-VertexFan vertexFan(const ClothMesh& mesh, int vertex, const std::vector<int>& around,
-                    const std::vector<Mat2>& triangleStress);
+// The rest geometry of each triangle's three corners as fan sectors (stress left zero): it changes
+// only with the topology, so it is computed once and then patched for the triangles a tear
+// changes, not per step (it costs two arc tangents per corner).
+using TriangleCorners = std::array<FanSector, 3>;
+FanSector cornerSector(const Triangle& triangle, int corner);
+void updateTriangleCorners(const ClothMesh& mesh, const std::vector<int>& triangles, std::vector<TriangleCorners>& corners);
+std::vector<TriangleCorners> triangleCorners(const ClothMesh& mesh);
+
+// `outFan` is reused (no allocation once it has grown).
+void vertexFan(const ClothMesh& mesh, int vertex, std::span<const int> around,
+               const std::vector<TriangleCorners>& corners, const std::vector<Mat2>& triangleStress, VertexFan& outFan);
 
 // zeta (N/m) for the line through the vertex at `angle` (rad, material space; for an open fan,
 // the ray at `angle`, which must lie inside the fan).

@@ -1,6 +1,10 @@
 #include "tearing/tear_candidates.h"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
+#include <utility>
+#include <span>
 #include <numbers>
 
 #include "tearing/separation_strength.h"
@@ -10,26 +14,38 @@ namespace {
 
 constexpr double kRadToDeg = 180.0 / std::numbers::pi;
 
-// omega of one line at a vertex, filled into `candidate`.
-void evaluate(const VertexFan& fan, double angle, const TearTable& table, double weftAngleRad,
-              TearCandidate& candidate) {
-  candidate.angle = angle;
-  candidate.separation = separationStrength(fan, angle);
-  candidate.alphaDeg = angleFromWarpDeg(angle, weftAngleRad);
-  candidate.required = requiredStrength(table, candidate.alphaDeg);
-  candidate.ratio = candidate.separation / candidate.required;
+// omega of one line, all of it evaluated.
+TearCandidate evaluateLine(const VertexFan& fan, double angle, double zeta, const TearTable& table,
+                           double weftAngleRad) {
+  TearCandidate line;
+  line.angle = angle;
+  line.separation = zeta;
+  line.alphaDeg = angleFromWarpDeg(angle, weftAngleRad);
+  line.required = requiredStrength(table, line.alphaDeg);
+  line.ratio = zeta / line.required;
+  return line;
+}
+
+// Replaces `best` by the line at `angle` if its omega is higher. omega <= zeta / (the weakest
+// strength), so a line whose zeta cannot beat `best` skips the direction and table lookups (the
+// margin covers rounding: the result is the same as evaluating everything).
+void keepIfBetter(const VertexFan& fan, double angle, const TearTable& table, double weakest, double weftAngleRad,
+                  TearCandidate& best) {
+  const double zeta = separationStrength(fan, angle);
+  if (zeta < best.ratio * weakest * (1.0 - 1e-12)) return;
+  const TearCandidate trial = evaluateLine(fan, angle, zeta, table, weftAngleRad);
+  if (trial.ratio > best.ratio) best = trial;
 }
 
 // The thesis' lines: both edges and the bisector of each incident corner. On an open fan the
 // border edges are skipped (a ray along the border separates nothing).
-TearCandidate bestThesisLine(const VertexFan& fan, const TearTable& table, double weftAngleRad,
+TearCandidate bestThesisLine(const VertexFan& fan, const TearTable& table, double weakest, double weftAngleRad,
                              TearSearchCounts& counts) {
-  TearCandidate best, trial;
+  TearCandidate best;
   for (const FanSector& sector : fan.sectors) {
     for (const double angle : {sector.start, sector.start + 0.5 * sector.span, sector.start + sector.span}) {
       ++counts.linesEvaluated;
-      evaluate(fan, angle, table, weftAngleRad, trial);
-      if (trial.ratio > best.ratio) best = trial;
+      keepIfBetter(fan, angle, table, weakest, weftAngleRad, best);
     }
   }
   return best;
@@ -37,17 +53,16 @@ TearCandidate bestThesisLine(const VertexFan& fan, const TearTable& table, doubl
 
 // Dense sampling of the fan, then a golden-section search on omega between the best sample's
 // neighbours (omega need not be unimodal there; the search only improves on the sample).
-TearCandidate bestDenseLine(const VertexFan& fan, const TearTable& table, double weftAngleRad, int samples,
-                            TearSearchCounts& counts) {
+TearCandidate bestDenseLine(const VertexFan& fan, const TearTable& table, double weakest, double weftAngleRad,
+                            int samples, TearSearchCounts& counts) {
   const double from = fan.closed ? 0.0 : fan.openStart;
   const double range = fan.closed ? std::numbers::pi : fan.openSpan;
   const double step = range / samples;
-  TearCandidate best, trial;
+  TearCandidate best;
   for (int k = 0; k < samples; ++k) {
     ++counts.linesEvaluated;
     // Rays sit at the middle of their sample interval, so none lies along the open fan's border.
-    evaluate(fan, from + (fan.closed ? k : k + 0.5) * step, table, weftAngleRad, trial);
-    if (trial.ratio > best.ratio) best = trial;
+    keepIfBetter(fan, from + (fan.closed ? k : k + 0.5) * step, table, weakest, weftAngleRad, best);
   }
   if (!(best.ratio > 0.0)) return best;
   const double invPhi = (std::sqrt(5.0) - 1.0) / 2.0;
@@ -55,10 +70,9 @@ TearCandidate bestDenseLine(const VertexFan& fan, const TearTable& table, double
   double hi = fan.closed ? best.angle + step : std::min(from + range, best.angle + step);
   for (int iteration = 0; iteration < 20; ++iteration) {
     const double a = hi - invPhi * (hi - lo), b = lo + invPhi * (hi - lo);
-    TearCandidate left, right;
     counts.linesEvaluated += 2;
-    evaluate(fan, a, table, weftAngleRad, left);
-    evaluate(fan, b, table, weftAngleRad, right);
+    const TearCandidate left = evaluateLine(fan, a, separationStrength(fan, a), table, weftAngleRad);
+    const TearCandidate right = evaluateLine(fan, b, separationStrength(fan, b), table, weftAngleRad);
     if (left.ratio > best.ratio) best = left;
     if (right.ratio > best.ratio) best = right;
     if (left.ratio >= right.ratio) {
@@ -80,28 +94,80 @@ double angleFromWarpDeg(double angle, double weftAngleRad) {
   return std::fmod(alpha + 360.0, 180.0);                            // Eq. 3.3
 }
 
-void findTearCandidates(const ClothMesh& mesh, const std::vector<Mat2>& triangleStress, const TearTable& table,
+void findTearCandidates(const ClothMesh& mesh, const std::vector<TriangleCorners>& corners,
+                        const std::vector<Mat2>& triangleStress, const TearTable& table,
                         double weftAngleRad, const TearSearchSettings& settings, std::vector<TearCandidate>& out,
                         TearSearchCounts& counts) {
   out.clear();
-  const std::vector<std::vector<int>> around = vertexTriangles(mesh);
+  // The triangles around each vertex in compressed rows (one allocation, not one per vertex).
+  const int n = mesh.vertexCount();
+  std::vector<int> rowStart(n + 1, 0), around(3 * mesh.tris.size());
+  for (const Triangle& t : mesh.tris) {
+    for (int v : t.v) ++rowStart[v + 1];
+  }
+  for (int v = 0; v < n; ++v) rowStart[v + 1] += rowStart[v];
+  std::vector<int> fill(rowStart.begin(), rowStart.end() - 1);
+  for (int t = 0; t < mesh.triangleCount(); ++t) {
+    for (int v : mesh.tris[t].v) around[fill[v]++] = t;
+  }
   const double weakest = weakestStrength(table);
-  for (int v = 0; v < mesh.vertexCount(); ++v) {
-    if (around[v].empty()) continue;
-    ++counts.vertices;
-    const VertexFan fan = vertexFan(mesh, v, around[v], triangleStress);
-    // The margin covers the rounding of the bound itself, so the skip never changes a result.
-    if (settings.skipByBound && separationStrengthBound(fan) * (1.0 + 1e-9) < weakest) {
-      ++counts.skipped;
-      continue;
-    }
-    TearCandidate best = settings.lines == CandidateLines::Thesis
-                             ? bestThesisLine(fan, table, weftAngleRad, counts)
-                             : bestDenseLine(fan, table, weftAngleRad, settings.denseDirections, counts);
-    if (!(best.ratio > 1.0)) continue;
+  auto fanOf = [&](int v, VertexFan& fan) {
+    vertexFan(mesh, v, std::span<const int>(around.data() + rowStart[v], around.data() + rowStart[v + 1]), corners,
+              triangleStress, fan);
+  };
+  auto bestLineOf = [&](const VertexFan& fan) {
+    return settings.lines == CandidateLines::Thesis
+               ? bestThesisLine(fan, table, weakest, weftAngleRad, counts)
+               : bestDenseLine(fan, table, weakest, weftAngleRad, settings.denseDirections, counts);
+  };
+  auto candidateOf = [&](int v, const VertexFan& fan, TearCandidate best) {
     best.vertex = v;
+    const Triangle& first = mesh.tris[around[rowStart[v]]];
+    best.restPosition = first.rest[first.v[0] == v ? 0 : first.v[1] == v ? 1 : 2];
     best.ray = !fan.closed;
-    out.push_back(best);
+    return best;
+  };
+  // The vertices that may reach omega = 1 (all of them without the bound), with their bounds.
+  // The margin covers the rounding of the bound itself, so the skip never changes a result.
+  VertexFan fan;
+  std::vector<std::pair<double, int>> open;  // (bound on omega, vertex)
+  for (int v = 0; v < n; ++v) {
+    if (rowStart[v] == rowStart[v + 1]) continue;
+    ++counts.vertices;
+    double bound = std::numeric_limits<double>::infinity();
+    if (settings.skipByBound) {
+      fanOf(v, fan);
+      bound = separationStrengthBound(fan) * (1.0 + 1e-9) / weakest;
+      if (bound < 1.0) {
+        ++counts.skipped;
+        continue;
+      }
+    }
+    open.emplace_back(bound, v);
+  }
+  if (settings.onlyTheBest && settings.skipByBound) {
+    // Branch and bound: in order of decreasing bound, until no vertex left can beat the best
+    // found (ties are still evaluated, so the winner is the one selectTears would pick).
+    std::sort(open.begin(), open.end(), [](const auto& a, const auto& b) {
+      return a.first != b.first ? a.first > b.first : a.second < b.second;
+    });
+    TearCandidate winner;
+    for (const auto& [bound, v] : open) {
+      if (bound < winner.ratio) {
+        ++counts.skipped;
+        continue;
+      }
+      fanOf(v, fan);
+      const TearCandidate best = candidateOf(v, fan, bestLineOf(fan));
+      if (best.ratio > winner.ratio || (best.ratio == winner.ratio && best.vertex < winner.vertex)) winner = best;
+    }
+    if (winner.ratio > 1.0) out.push_back(winner);
+    return;
+  }
+  for (const auto& [bound, v] : open) {
+    fanOf(v, fan);
+    const TearCandidate best = bestLineOf(fan);
+    if (best.ratio > 1.0) out.push_back(candidateOf(v, fan, best));
   }
 }
 

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "mesh/cloth_mesh.h"
+#include "tearing/separation_strength.h"
 #include "tearing/tear_table.h"
 #include "util/types.h"
 
@@ -25,10 +26,13 @@ struct TearSearchSettings {
   CandidateLines lines = CandidateLines::Thesis;
   int denseDirections = 180;  // samples over a line's half turn (over the fan for a ray)
   bool skipByBound = true;    // skip vertices whose zeta bound is below the weakest strength
+  bool onlyTheBest = false;   // with skipByBound: return only the best vertex's line (one tear per
+                              // step), skipping every vertex whose bound cannot beat the best so far
 };
 
 struct TearCandidate {
   int vertex = kNone;
+  Vec2 restPosition = Vec2::Zero();  // the vertex in material space (m)
   double angle = 0.0;       // direction of the line (or ray) in material space (rad)
   bool ray = false;         // the vertex is on a border or a tear: only the ray at `angle` opens
   double separation = 0.0;  // zeta (N/m)
@@ -47,8 +51,11 @@ struct TearSearchCounts {
 // U is at weftAngleRad from material x: Eq. 3.1-3.3 as printed (degrees, in [0, 180)).
 double angleFromWarpDeg(double angle, double weftAngleRad);
 
-// The best line of every vertex whose best omega exceeds 1, in vertex order.
-void findTearCandidates(const ClothMesh& mesh, const std::vector<Mat2>& triangleStress, const TearTable& table,
+// The best line of every vertex whose best omega exceeds 1, in vertex order (with onlyTheBest,
+// just the one selectTears would choose first).
+// `corners` is triangleCorners(mesh), kept up to date (separation_strength.h).
+void findTearCandidates(const ClothMesh& mesh, const std::vector<TriangleCorners>& corners,
+                        const std::vector<Mat2>& triangleStress, const TearTable& table,
                         double weftAngleRad, const TearSearchSettings& settings, std::vector<TearCandidate>& out,
                         TearSearchCounts& counts);
 

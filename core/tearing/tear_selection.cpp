@@ -4,14 +4,7 @@
 
 namespace weft {
 
-Vec2 restPosition(const ClothMesh& mesh, int vertex, const std::vector<int>& around) {
-  const Triangle& t = mesh.tris[around.front()];
-  const int k = t.v[0] == vertex ? 0 : t.v[1] == vertex ? 1 : 2;
-  return t.rest[k];
-}
-
-std::vector<TearCandidate> selectTears(std::vector<TearCandidate> candidates, const ClothMesh& mesh,
-                                       const TearSelectionSettings& settings) {
+std::vector<TearCandidate> selectTears(std::vector<TearCandidate> candidates, const TearSelectionSettings& settings) {
   std::sort(candidates.begin(), candidates.end(), [](const TearCandidate& a, const TearCandidate& b) {
     if (a.ratio != b.ratio) return a.ratio > b.ratio;
     if (a.vertex != b.vertex) return a.vertex < b.vertex;
@@ -19,13 +12,11 @@ std::vector<TearCandidate> selectTears(std::vector<TearCandidate> candidates, co
   });
   std::vector<TearCandidate> chosen;
   if (settings.maxTearsPerStep <= 0) return chosen;
-  std::vector<std::vector<int>> around;
-  if (settings.maxTearsPerStep > 1) around = vertexTriangles(mesh);
   std::vector<Vec2> taken;
   for (const TearCandidate& c : candidates) {
     if (!(c.ratio > 1.0)) break;
     if (settings.maxTearsPerStep == 1) return {c};
-    const Vec2 at = restPosition(mesh, c.vertex, around[c.vertex]);
+    const Vec2& at = c.restPosition;
     const bool farEnough = std::all_of(taken.begin(), taken.end(), [&](const Vec2& p) {
       return (p - at).norm() >= settings.minSpacing;
     });

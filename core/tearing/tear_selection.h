@@ -6,7 +6,6 @@
 // none can have changed another's stress within the step.
 #include <vector>
 
-#include "mesh/cloth_mesh.h"
 #include "tearing/tear_candidates.h"
 
 namespace weft {
@@ -19,11 +18,6 @@ struct TearSelectionSettings {
 // Orders by omega (highest first; equal ratios by vertex id, then angle, so the choice never
 // depends on anything but the candidates), keeps those above 1 and takes them greedily while they
 // keep `minSpacing` from every one already taken, up to maxTearsPerStep.
-std::vector<TearCandidate> selectTears(std::vector<TearCandidate> candidates, const ClothMesh& mesh,
-                                       const TearSelectionSettings& settings);
-
-// A vertex's rest position in material space (from one of its triangles; all agree on a manifold
-// fan).
-Vec2 restPosition(const ClothMesh& mesh, int vertex, const std::vector<int>& around);
+std::vector<TearCandidate> selectTears(std::vector<TearCandidate> candidates, const TearSelectionSettings& settings);
 
 }  // namespace weft

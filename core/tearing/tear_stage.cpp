@@ -14,6 +14,7 @@ TearStage::TearStage(const Scene& scene) : spec_(scene.tearing) {
   search_.lines = spec_.denseLines ? CandidateLines::Dense : CandidateLines::Thesis;
   search_.denseDirections = spec_.denseDirections;
   search_.skipByBound = spec_.skipByBound;
+  search_.onlyTheBest = spec_.maxTearsPerStep == 1;
   selection_.maxTearsPerStep = spec_.maxTearsPerStep;
   selection_.minSpacing = spec_.minSpacing;
   bool anyTable = false;
@@ -24,7 +25,6 @@ TearStage::TearStage(const Scene& scene) : spec_(scene.tearing) {
 std::vector<char> TearStage::run(std::vector<Cloth>& cloths, double time, StageProfile& profile) {
   std::vector<char> changed(cloths.size(), 0);
   if (!runs_) return changed;
-  StageTimer timer(profile, "tearing");
   TearGuards guards;
   guards.minEdgeLength = spec_.minEdgeLength;
   guards.minAngleDeg = spec_.minAngleDeg;
@@ -32,14 +32,24 @@ std::vector<char> TearStage::run(std::vector<Cloth>& cloths, double time, StageP
   for (std::size_t c = 0; c < cloths.size(); ++c) {
     Cloth& cloth = cloths[c];
     if (!cloth.material.tearTable) continue;
-    tensileStresses(cloth, stress_);
-    findTearCandidates(cloth.mesh, stress_, *cloth.material.tearTable, cloth.weftAngleRad, search_, candidates_,
-                       stats_.search);
-    const std::vector<TearCandidate> chosen = selectTears(candidates_, cloth.mesh, selection_);
+    if (corners_.size() != cloths.size()) corners_.resize(cloths.size());
+    std::vector<TriangleCorners>& corners = corners_[c];
+    if (corners.size() != cloth.mesh.tris.size()) corners = triangleCorners(cloth.mesh);
+    {
+      StageTimer timer(profile, "tear_stress");
+      tensileStresses(cloth, stress_);
+    }
+    std::vector<TearCandidate> chosen;
+    {
+      StageTimer timer(profile, "tear_search");
+      findTearCandidates(cloth.mesh, corners, stress_, *cloth.material.tearTable, cloth.weftAngleRad, search_,
+                         candidates_, stats_.search);
+      chosen = selectTears(candidates_, selection_);
+    }
     if (chosen.empty()) continue;
+    StageTimer timer(profile, "tear_surgery");
     // The records are taken before any surgery: a tear appends vertices and triangles, and the
     // fans read here are those the candidates were found in.
-    const std::vector<std::vector<int>> around = vertexTriangles(cloth.mesh);
     std::vector<TearRecord> records;
     for (const TearCandidate& tear : chosen) {
       TearRecord record;
@@ -47,7 +57,7 @@ std::vector<char> TearStage::run(std::vector<Cloth>& cloths, double time, StageP
       record.cloth = static_cast<int>(c);
       record.vertex = tear.vertex;
       record.position = cloth.mesh.x[tear.vertex];
-      record.restPosition = restPosition(cloth.mesh, tear.vertex, around[tear.vertex]);
+      record.restPosition = tear.restPosition;
       record.angleDeg = tear.angle * 180.0 / std::numbers::pi;
       record.alphaDeg = tear.alphaDeg;
       record.ray = tear.ray;
@@ -64,6 +74,7 @@ std::vector<char> TearStage::run(std::vector<Cloth>& cloths, double time, StageP
         continue;
       }
       applyTopologyChange(cloth, change);
+      updateTriangleCorners(cloth.mesh, change.changedTriangles, corners);
       changed[c] = 1;
       ++stats_.tears;
       log_.push_back(records[k]);

@@ -53,6 +53,7 @@ class TearStage {
   TearSelectionSettings selection_;
   bool runs_ = false;
   std::vector<Mat2> stress_;
+  std::vector<std::vector<TriangleCorners>> corners_;  // per cloth, patched after each tear
   std::vector<TearCandidate> candidates_;
   std::vector<TearRecord> log_;
   TearStats stats_;

@@ -3,17 +3,22 @@
 #include <algorithm>
 #include <cmath>
 
-#include <Eigen/Eigenvalues>
-
 #include "forces/membrane.h"
 #include "sim/cloth.h"
 
 namespace weft {
 
 Mat2 tensilePart(const Mat2& stress) {
-  const Eigen::SelfAdjointEigenSolver<Mat2> eigen(stress);
-  const Vec2 clamped = eigen.eigenvalues().cwiseMax(0.0);
-  return eigen.eigenvectors() * clamped.asDiagonal() * eigen.eigenvectors().transpose();
+  // Closed form (Mohr's circle): principal stresses mean +- radius, and the projector onto the
+  // larger one's direction, P = (S - lambda2 I) / (lambda1 - lambda2).
+  const double mean = 0.5 * (stress(0, 0) + stress(1, 1));
+  const double half = 0.5 * (stress(0, 0) - stress(1, 1));
+  const double radius = std::sqrt(half * half + stress(0, 1) * stress(0, 1));
+  const double larger = mean + radius, smaller = mean - radius;
+  if (smaller >= 0.0) return stress;                         // all tension
+  if (larger <= 0.0) return Mat2::Zero();                    // all compression
+  // One principal stress of each sign (radius > 0): keep the tensile one.
+  return larger * (stress - smaller * Mat2::Identity()) / (2.0 * radius);
 }
 
 Mat2 stressInMaterialFrame(const Vec3& stressUV, double weftAngleRad) {

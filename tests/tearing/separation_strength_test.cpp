@@ -18,7 +18,7 @@ constexpr double kPi = std::numbers::pi;
 // A closed fan of n equal sectors starting at `offset`, all with the same stress.
 VertexFan regularFan(int n, const Mat2& stress, double offset = 0.1) {
   VertexFan fan;
-  for (int k = 0; k < n; ++k) fan.sectors.push_back({offset + 2.0 * kPi * k / n, 2.0 * kPi / n, stress});
+  for (int k = 0; k < n; ++k) fan.sectors.push_back(makeSector(offset + 2.0 * kPi * k / n, 2.0 * kPi / n, stress));
   fan.closed = true;
   fan.openSpan = 2.0 * kPi;
   return fan;
@@ -27,7 +27,7 @@ VertexFan regularFan(int n, const Mat2& stress, double offset = 0.1) {
 // A border vertex on a straight border along x, material below it (angles from pi to 2 pi).
 VertexFan borderFan(int n, const Mat2& stress) {
   VertexFan fan;
-  for (int k = 0; k < n; ++k) fan.sectors.push_back({kPi + kPi * k / n, kPi / n, stress});
+  for (int k = 0; k < n; ++k) fan.sectors.push_back(makeSector(kPi + kPi * k / n, kPi / n, stress));
   fan.closed = false;
   fan.openStart = kPi;
   fan.openSpan = kPi;
@@ -115,7 +115,7 @@ TEST(SeparationStrength, TheBoundIsNeverExceeded) {
     double angle = fan.openStart;
     for (int k = 0; k < n; ++k) {
       Mat2 a = Mat2::Random() * 200.0;
-      fan.sectors.push_back({angle, total * weights[k] / sum, tensilePart(a + a.transpose())});
+      fan.sectors.push_back(makeSector(angle, total * weights[k] / sum, tensilePart(a + a.transpose())));
       angle += fan.sectors.back().span;
     }
     const double bound = separationStrengthBound(fan);

@@ -54,7 +54,7 @@ TearCandidate bestAtCentre(const ClothMesh& mesh, const std::vector<Mat2>& stres
   settings.lines = lines;
   std::vector<TearCandidate> found;
   TearSearchCounts counts;
-  findTearCandidates(mesh, stress, table, weft, settings, found, counts);
+  findTearCandidates(mesh, triangleCorners(mesh), stress, table, weft, settings, found, counts);
   const int n = static_cast<int>(std::lround(std::sqrt(mesh.vertexCount())));
   const int centre = (n / 2) * n + n / 2;  // an interior vertex of the square grid
   for (const TearCandidate& c : found) {
@@ -120,8 +120,8 @@ TEST(TearCandidates, SkippingByTheBoundChangesNothing) {
     without.skipByBound = false;
     std::vector<TearCandidate> a, b;
     TearSearchCounts countsWith, countsWithout;
-    findTearCandidates(mesh, stress, table, 0.2, with, a, countsWith);
-    findTearCandidates(mesh, stress, table, 0.2, without, b, countsWithout);
+    findTearCandidates(mesh, triangleCorners(mesh), stress, table, 0.2, with, a, countsWith);
+    findTearCandidates(mesh, triangleCorners(mesh), stress, table, 0.2, without, b, countsWithout);
     ASSERT_EQ(a.size(), b.size());
     EXPECT_GT(a.size(), 0u) << "some vertex should tear";
     for (std::size_t k = 0; k < a.size(); ++k) {
@@ -146,7 +146,7 @@ TEST(TearSelection, TheThesisRatioExampleAWithTenOverEightBeatsBWithTwentyOverNi
   b.separation = 20.0;
   b.required = 19.0;
   b.ratio = b.separation / b.required;
-  const std::vector<TearCandidate> chosen = selectTears({b, a}, mesh, TearSelectionSettings{});
+  const std::vector<TearCandidate> chosen = selectTears({b, a}, TearSelectionSettings{});
   ASSERT_EQ(chosen.size(), 1u);
   EXPECT_EQ(chosen[0].vertex, 7);
 }
@@ -157,16 +157,18 @@ TEST(TearSelection, SeveralTearsPerStepKeepTheirSpacingAndNothingBelowOneTears) 
   for (int v : {12, 13, 50, 88}) {
     TearCandidate c;
     c.vertex = v;
+    c.restPosition = mesh.tris.empty() ? Vec2::Zero() : Vec2((v % 10) / 9.0, (v / 10) / 9.0);
     c.ratio = 2.0 - 0.01 * v;
     candidates.push_back(c);
   }
   candidates.push_back(candidates[0]);
   candidates.back().vertex = 99;
+  candidates.back().restPosition = Vec2(1.0, 1.0);
   candidates.back().ratio = 0.9;
   TearSelectionSettings settings;
   settings.maxTearsPerStep = 10;
   settings.minSpacing = 0.25;
-  const std::vector<TearCandidate> chosen = selectTears(candidates, mesh, settings);
+  const std::vector<TearCandidate> chosen = selectTears(candidates, settings);
   // 13 is a neighbour of 12 (1/9 m away): dropped; 99 is below 1.
   ASSERT_EQ(chosen.size(), 3u);
   EXPECT_EQ(chosen[0].vertex, 12);
