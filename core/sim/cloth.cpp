@@ -11,7 +11,6 @@
 #include "util/input_error.h"
 
 namespace weft {
-namespace {
 
 Mat3 placementRotation(const Placement& placement) {
   using Eigen::AngleAxisd;
@@ -20,6 +19,8 @@ Mat3 placementRotation(const Placement& placement) {
   return (AngleAxisd(r.z(), Vec3::UnitZ()) * AngleAxisd(r.y(), Vec3::UnitY()) * AngleAxisd(r.x(), Vec3::UnitX()))
       .toRotationMatrix();
 }
+
+namespace {
 
 // Material-space position of each vertex (from the first triangle corner that names it).
 std::vector<Vec2> vertexRestPositions(const ClothMesh& mesh) {

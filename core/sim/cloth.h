@@ -34,6 +34,9 @@ struct Cloth {
 // a pin selection that selects nothing.
 Cloth buildCloth(const ClothSpec& spec, const std::string& sceneFile, int clothIndex);
 
+// The rotation of a placement: about world x, then y, then z.
+Mat3 placementRotation(const Placement& placement);
+
 // Recomputes the membrane elements and bending hinges from the mesh's rest data (after a
 // topology change or a weft-angle edit).
 void rebuildElements(Cloth& cloth);
