@@ -8,7 +8,8 @@ namespace weft::app {
 
 struct TearingBenchOptions {
   int resolution = 64;      // grid vertices per side
-  int warmup = 120;         // untimed steps: the pull builds up stress (0.5 s at 1/240 s)
+  int warmup = 335;         // untimed steps: the pull builds up stress until just before the
+                            // first tear (1.40 s at 1/240 s at 64^2)
   int steps = 30;           // timed steps per repeat
   int repeats = 3;          // the median over every timed step of every repeat is reported
   int threads = 1;
