@@ -56,6 +56,14 @@ int validateScene(const ValidateOptions& options) {
     }
     if (scene.ground.enabled) std::cout << ", ground at y = " << scene.ground.height;
     std::cout << "\n";
+    for (const ClothSpec& cloth : scene.cloths) {
+      if (!cloth.material.tearTable) continue;
+      const TearTable& table = *cloth.material.tearTable;
+      std::cout << "  cloth " << cloth.name << " tears: table "
+                << (table.name.empty() ? std::string("inline") : table.name) << ", " << table.strength.size()
+                << " direction(s), weakest " << weakestStrength(table) << " N/m"
+                << (scene.stages.tearing ? "" : " (tearing switched off)") << "\n";
+    }
     return kExitOk;
   } catch (const InputError& e) {
     std::cerr << "weft: " << e.what() << "\n";

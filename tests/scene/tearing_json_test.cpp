@@ -1,0 +1,109 @@
+// The tearing parts of a scene: a cloth's "tear_table" (a preset name or an inline table, in the
+// material or on the cloth) and the "tearing" section. Read as documented; bad input rejected
+// naming the file and the field.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "scene/scene_json.h"
+#include "support/temp_dir.h"
+#include "util/input_error.h"
+
+namespace weft {
+namespace {
+
+using nlohmann::json;
+using test::TempDir;
+
+json sheet() { return json::parse(R"({"cloths": [{"mesh": {"grid": {}}, "material": "11oz-black-denim"}]})"); }
+
+TEST(TearingJson, APresetTableAnInlineTableAndTheSectionAreRead) {
+  TempDir dir;
+  json scene = sheet();
+  scene["cloths"][0]["tear_table"] = "karaoz2015-table4.1-cloth3";
+  scene["tearing"] = json::parse(R"({"candidates": "dense", "dense_directions": 90, "tears_per_step": 3,
+      "min_spacing_m": 0.2, "min_angle_deg": 10, "skip_by_bound": false})");
+  Scene s = loadScene(dir.write("t.json", scene.dump()));
+  ASSERT_TRUE(s.cloths[0].material.tearTable.has_value());
+  EXPECT_EQ(s.cloths[0].material.tearTable->name, "karaoz2015-table4.1-cloth3");
+  EXPECT_EQ(s.cloths[0].material.tearTable->strength, (std::vector<double>{12.0, 25.0, 35.0, 25.0}));
+  EXPECT_TRUE(s.tearing.denseLines);
+  EXPECT_EQ(s.tearing.denseDirections, 90);
+  EXPECT_EQ(s.tearing.maxTearsPerStep, 3);
+  EXPECT_DOUBLE_EQ(s.tearing.minSpacing, 0.2);
+  EXPECT_DOUBLE_EQ(s.tearing.minAngleDeg, 10.0);
+  EXPECT_FALSE(s.tearing.skipByBound);
+
+  // Inline in the material, then replaced by the cloth's own.
+  scene = sheet();
+  json material = json::parse(R"({"area_density_kg_m2": 0.3, "elasticity": {"model": "isotropic",
+      "young_modulus_n_per_m": 1000, "poisson_ratio": 0.3}, "bending": {"model": "none"},
+      "tear_table": {"strength": [7], "unit_n_per_m": 2}})");
+  scene["cloths"][0]["material"] = material;
+  s = loadScene(dir.write("t2.json", scene.dump()));
+  ASSERT_TRUE(s.cloths[0].material.tearTable.has_value());
+  EXPECT_DOUBLE_EQ(weakestStrength(*s.cloths[0].material.tearTable), 14.0);
+  scene["cloths"][0]["tear_table"] = json::parse(R"({"strength": [3, 4]})");
+  s = loadScene(dir.write("t3.json", scene.dump()));
+  EXPECT_EQ(s.cloths[0].material.tearTable->strength, (std::vector<double>{3.0, 4.0}));
+  // No table: never tears.
+  EXPECT_FALSE(loadScene(dir.write("t4.json", sheet().dump())).cloths[0].material.tearTable.has_value());
+}
+
+struct BadTearing {
+  std::string name;
+  std::string patch;   // merged into the sheet scene
+  std::string field;   // expected InputError::field()
+  std::string mentions;
+};
+std::ostream& operator<<(std::ostream& out, const BadTearing& c) { return out << c.name; }
+
+class TearingJsonRejects : public ::testing::TestWithParam<BadTearing> {};
+
+TEST_P(TearingJsonRejects, NamingTheFileAndTheField) {
+  const BadTearing& c = GetParam();
+  TempDir dir;
+  json scene = sheet();
+  scene.merge_patch(json::parse(c.patch));
+  if (!scene["cloths"][0].contains("mesh")) scene["cloths"][0] = sheet()["cloths"][0];
+  try {
+    loadScene(dir.write("bad-tearing.json", scene.dump(2)));
+    FAIL() << "accepted without an InputError";
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("bad-tearing.json"), std::string::npos) << what;
+    EXPECT_EQ(e.field(), c.field) << what;
+    EXPECT_NE(what.find(c.mentions), std::string::npos) << "expected '" << c.mentions << "' in: " << what;
+  }
+}
+
+json clothWith(const std::string& key, const std::string& value) {
+  json cloth = sheet()["cloths"][0];
+  cloth[key] = json::parse(value);
+  return cloth;
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    BadInput, TearingJsonRejects,
+    ::testing::Values(
+        BadTearing{"UnknownPreset", json({{"cloths", {clothWith("tear_table", R"("no-such-table")")}}}).dump(),
+                   "/cloths/0/tear_table", "karaoz2015-table4.1-cloth1"},
+        BadTearing{"NotATable", json({{"cloths", {clothWith("tear_table", "5")}}}).dump(), "/cloths/0/tear_table",
+                   "tear table"},
+        BadTearing{"NegativeStrength",
+                   json({{"cloths", {clothWith("tear_table", R"({"strength": [5, -2]})")}}}).dump(),
+                   "/cloths/0/tear_table/strength/1", "strength"},
+        BadTearing{"UnevenDirections",
+                   json({{"cloths", {clothWith("tear_table", R"({"strength": [5, 6], "directions_deg": [0, 60]})")}}})
+                       .dump(),
+                   "/cloths/0/tear_table/directions_deg/1", "evenly spaced"},
+        BadTearing{"UnknownCandidates", R"({"tearing": {"candidates": "all"}})", "/tearing/candidates", "thesis"},
+        BadTearing{"ZeroTearsPerStep", R"({"tearing": {"tears_per_step": 0}})", "/tearing/tears_per_step", ""},
+        BadTearing{"WideAngleGuard", R"({"tearing": {"min_angle_deg": 45}})", "/tearing/min_angle_deg", "30"},
+        BadTearing{"UnknownKey", R"({"tearing": {"speed": 1}})", "/tearing/speed", "speed"}),
+    [](const auto& info) { return info.param.name; });
+
+}  // namespace
+}  // namespace weft
