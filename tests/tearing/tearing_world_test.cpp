@@ -12,6 +12,8 @@
 #include "mesh/grid.h"
 #include "sim/cloth.h"
 #include "tearing/tear_candidates.h"
+#include "contact/obstacle.h"
+#include "scene/scene_json.h"
 #include "sim/world.h"
 #include "support/test_scenes.h"
 #include "tearing/tear_stage.h"
@@ -320,6 +322,44 @@ TEST(Tearing, SeveralTearsPerStepFollowTheSameDirections) {
   EXPECT_GE(b.tearLog().size(), a.tearLog().size());
   EXPECT_GE(shareFour, 0.6);
   EXPECT_TRUE(b.metrics().finite);
+}
+
+}  // namespace
+}  // namespace weft
+
+namespace weft {
+namespace {
+
+// Thesis §4.4: the light ball stays on the cloth ceiling; the ball ten times heavier tears
+// through it, along Cloth 2's weak direction (horizontal lines: along the weft).
+struct CeilingRun {
+  long long tears = 0;
+  double ballHeight = 0.0;  // of the ball that was dropped, at the end
+  double horizontalShare = 0.0;
+};
+
+CeilingRun dropOnCeiling(bool heavy) {
+  const std::string scene = std::string(WEFT_SOURCE_DIR) + "/presets/scenes/balls-on-cloth-ceiling.json";
+  // The other ball is moved far aside, where it falls without touching anything.
+  const std::string aside = heavy ? "obstacles.0.placement.translate=[10,1.3,0]" : "obstacles.1.placement.translate=[10,2.8,0]";
+  World world(loadScene(scene, {aside, "cloths.0.mesh.grid.resolution=[24,24]"}));
+  for (int s = 0; s < 240; ++s) world.step();  // 2 s
+  CeilingRun run;
+  run.tears = world.tearStats().tears;
+  run.ballHeight = world.obstacle(heavy ? 1 : 0).body.state.position.y();
+  run.horizontalShare = shareNear(world.tearLog(), 0.0, 22.5);
+  EXPECT_TRUE(world.metrics().finite);
+  return run;
+}
+
+TEST(Tearing, ALightBallStaysOnAClothCeilingAndAHeavyOneTearsThrough) {
+  const CeilingRun light = dropOnCeiling(false);
+  const CeilingRun heavy = dropOnCeiling(true);
+  EXPECT_EQ(light.tears, 0);
+  EXPECT_GT(light.ballHeight, 0.8) << "resting in the sag of the ceiling at y = 1";
+  EXPECT_GT(heavy.tears, 5);
+  EXPECT_LT(heavy.ballHeight, 0.0) << "fallen through the ceiling";
+  EXPECT_GE(heavy.horizontalShare, 0.8) << "Cloth 2 tears along the weft";
 }
 
 }  // namespace
