@@ -10,6 +10,40 @@
 
 namespace weft {
 
+namespace {
+
+// How far each copy of a separated vertex moves into its own side (m). The copies start at one
+// point, so the two lips of a fresh tear touch exactly: self-collision could not tell which side
+// is which and would treat the seam as a collision in every step (ARCSim nudges its copies apart
+// too). A micrometre is far below any contact thickness: the proximity pass then sees two lips
+// in contact with a well-defined normal, as it would after any fold.
+constexpr double kCopySeparation = 1e-6;
+
+// Moves each copy of a separated vertex (and its original) towards the middle of its own
+// triangles, so the lips of the tear no longer coincide. Velocities are not touched (momentum is
+// kept); the masses do not move by more than a micrometre.
+void nudgeCopiesApart(ClothMesh& mesh, const TopologyChange& change) {
+  if (change.vertexCopies.empty()) return;
+  std::vector<int> moved;
+  for (const auto& [original, copy] : change.vertexCopies) {
+    moved.push_back(original);
+    moved.push_back(copy);
+  }
+  std::vector<Vec3> towards(moved.size(), Vec3::Zero());
+  for (const Triangle& t : mesh.tris) {
+    const Vec3 centroid = (mesh.x[t.v[0]] + mesh.x[t.v[1]] + mesh.x[t.v[2]]) / 3.0;
+    for (std::size_t k = 0; k < moved.size(); ++k) {
+      if (t.v[0] == moved[k] || t.v[1] == moved[k] || t.v[2] == moved[k]) towards[k] += centroid - mesh.x[moved[k]];
+    }
+  }
+  for (std::size_t k = 0; k < moved.size(); ++k) {
+    const double length = towards[k].norm();
+    if (length > 0.0 && std::isfinite(length)) mesh.x[moved[k]] += (kCopySeparation / length) * towards[k];
+  }
+}
+
+}  // namespace
+
 TearStage::TearStage(const Scene& scene) : spec_(scene.tearing) {
   search_.lines = spec_.denseLines ? CandidateLines::Dense : CandidateLines::Thesis;
   search_.denseDirections = spec_.denseDirections;
@@ -75,6 +109,7 @@ std::vector<char> TearStage::run(std::vector<Cloth>& cloths, double time, StageP
       }
       applyTopologyChange(cloth, change);
       updateTriangleCorners(cloth.mesh, change.changedTriangles, corners);
+      nudgeCopiesApart(cloth.mesh, change);
       changed[c] = 1;
       ++stats_.tears;
       log_.push_back(records[k]);
