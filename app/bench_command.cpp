@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "accuracy_study.h"
+#include "bench_stats.h"
 #include "command.h"
 #include "contact_bench.h"
 #include "tearing_bench.h"
@@ -113,11 +114,6 @@ int stableSymplecticSubsteps(const Scene& scene) {
   return std::max(1, static_cast<int>(std::ceil(scene.solver.dt / stableDt)));
 }
 
-double median(std::vector<double> values) {
-  std::sort(values.begin(), values.end());
-  const std::size_t n = values.size();
-  return n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-}
 
 std::vector<std::string> overridesFor(const Configuration& config, const BenchOptions& options) {
   std::vector<std::string> overrides{
@@ -202,9 +198,7 @@ std::string sharesText(const Result& r, const char* separator, int limit) {
 
 std::string csvText(const std::vector<Result>& results, const BenchOptions& options, const fs::path& sceneFile) {
   std::ostringstream csv;
-  csv << "# weft bench; machine: " << machineName() << "; cpu: " << cpuModel()
-      << "; cores: " << std::thread::hardware_concurrency() << "; threads: " << options.threads
-      << "; git: " << gitDescribe() << "; date: " << utcDate() << "; scene: " << sceneFile.string() << "\n";
+  csv << benchCsvMachineLine("weft bench", options.threads, sceneFile.string());
   csv << "size,vertices,triangles,integrator,linear_solver,dt,substeps,warmup,steps,repeats,"
          "median_ms_per_step,min_ms_per_step,max_ms_per_step,ms_per_step_per_1000_vertices,"
          "linear_iterations_per_step,newton_iterations_per_step,finite,stage_shares\n";

@@ -2,6 +2,7 @@
 // resolution once the sheet lies on the ball: every timed step is one sample, and the median over
 // all repeats is reported with the pass counts, so a slow step can be traced to its pass.
 #include "contact_bench.h"
+#include "bench_stats.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -22,20 +23,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-double contactMs(const StageProfile& profile) {
-  double ms = 0.0;
-  for (std::size_t k = 0; k < profile.names.size(); ++k) {
-    if (profile.names[k].rfind("contact_", 0) == 0) ms += profile.totalMs[k];
-  }
-  return ms;
-}
-
-double median(std::vector<double> values) {
-  if (values.empty()) return 0.0;
-  std::sort(values.begin(), values.end());
-  const std::size_t n = values.size();
-  return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-}
 
 struct ContactBenchRow {
   bool self = false;
@@ -65,10 +52,10 @@ ContactBenchRow measure(const ContactBenchOptions& options, bool self) {
     for (int s = 0; s < options.warmup; ++s) world.step();
     const ContactStats before = world.contactStats();
     for (int s = 0; s < options.steps; ++s) {
-      const double contactBefore = contactMs(world.profile());
+      const double contactBefore = world.profile().totalWithPrefix("contact_");
       const double totalBefore = world.profile().total();
       world.step();
-      contactSamples.push_back(contactMs(world.profile()) - contactBefore);
+      contactSamples.push_back(world.profile().totalWithPrefix("contact_") - contactBefore);
       stepSamples.push_back(world.profile().total() - totalBefore);
     }
     const ContactStats& after = world.contactStats();
@@ -111,11 +98,10 @@ int runContactBench(const ContactBenchOptions& options) {
     return kExitBadInput;
   }
   std::ostringstream csv;
-  csv << "# weft bench --contact; machine: " << machineName() << "; cpu: " << cpuModel()
-      << "; cores: " << std::thread::hardware_concurrency() << "; threads: " << options.threads
-      << "; git: " << gitDescribe() << "; date: " << utcDate() << "; scene: sheet-on-sphere, " << options.resolution
-      << "^2, " << options.warmup << " warm-up steps, " << options.steps << " timed steps x " << options.repeats
-      << " repeats\n";
+  csv << benchCsvMachineLine("weft bench --contact", options.threads,
+                             "sheet-on-sphere, " + std::to_string(options.resolution) + "^2, " +
+                                 std::to_string(options.warmup) + " warm-up steps, " + std::to_string(options.steps) +
+                                 " timed steps x " + std::to_string(options.repeats) + " repeats");
   csv << "self_collision,vertices,median_contact_ms_per_step,max_contact_ms_per_step,median_step_ms,"
          "proximity_impulses_per_step,ccd_iterations_per_step,ccd_collisions_per_step,impact_zone_steps_per_step,"
          "resolved\n";

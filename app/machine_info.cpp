@@ -6,6 +6,8 @@
 #include <ctime>
 #include <exception>
 #include <filesystem>
+#include <sstream>
+#include <thread>
 #include <fstream>
 
 #include "util/atomic_file.h"
@@ -48,6 +50,14 @@ std::string utcDate() {
   char text[32];
   std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &tm);
   return text;
+}
+
+std::string benchCsvMachineLine(const std::string& command, int threads, const std::string& scene) {
+  std::ostringstream line;
+  line << "# " << command << "; machine: " << machineName() << "; cpu: " << cpuModel()
+       << "; cores: " << std::thread::hardware_concurrency() << "; threads: " << threads << "; git: " << gitDescribe()
+       << "; date: " << utcDate() << "; scene: " << scene << "\n";
+  return line.str();
 }
 
 bool writeBenchCsv(const std::string& file, const std::string& text) {

@@ -10,6 +10,10 @@ std::string machineName();   // uname's machine, e.g. "x86_64"
 std::string gitDescribe();   // `git describe --always --dirty` of the source tree, or "unknown"
 std::string utcDate();       // ISO 8601, UTC
 
+// The first line of a benchmark CSV: "# weft bench[ FLAG]; machine: ...; cpu: ...; cores: ...;
+// threads: ...; git: ...; date: ...; scene: SCENE\n".
+std::string benchCsvMachineLine(const std::string& command, int threads, const std::string& scene);
+
 // Writes a benchmark's CSV atomically, creating its folder, and says where; on failure prints
 // "weft: cannot write FILE: why" and returns false.
 bool writeBenchCsv(const std::string& file, const std::string& text);

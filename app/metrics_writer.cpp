@@ -84,10 +84,7 @@ nlohmann::ordered_json runMetrics(const World& world, double wallSeconds) {
   };
   if (world.contactRuns()) {
     const ContactStats& c = world.contactStats();
-    double contactMs = 0.0;
-    for (std::size_t k = 0; k < profile.names.size(); ++k) {
-      if (profile.names[k].rfind("contact_", 0) == 0) contactMs += profile.totalMs[k];
-    }
+    const double contactMs = profile.totalWithPrefix("contact_");
     j["collision"] = {
         {"stage_ms", contactMs},
         {"self_collision", scene.contact.self},
@@ -119,11 +116,7 @@ nlohmann::ordered_json runMetrics(const World& world, double wallSeconds) {
                      {"ratio", r.ratio}});
     }
     j["tears"] = t.tears;
-    double tearingMs = 0.0;
-    for (std::size_t k = 0; k < profile.names.size(); ++k) {
-      if (profile.names[k].rfind("tear_", 0) == 0) tearingMs += profile.totalMs[k];
-    }
-    j["tearing"] = {{"stage_ms", tearingMs},
+    j["tearing"] = {{"stage_ms", profile.totalWithPrefix("tear_")},
                     {"refused", t.refused},
                     {"vertices_searched", t.search.vertices},
                     {"vertices_skipped_by_bound", t.search.skipped},

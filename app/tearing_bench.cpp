@@ -3,6 +3,7 @@
 // and the median over all repeats is reported beside the whole step's, so the stage's share of a
 // step can be read off.
 #include "tearing_bench.h"
+#include "bench_stats.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -23,21 +24,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// The tearing stages: tear_stress, tear_search, tear_surgery.
-double tearingMs(const StageProfile& profile) {
-  double ms = 0.0;
-  for (std::size_t k = 0; k < profile.names.size(); ++k) {
-    if (profile.names[k].rfind("tear_", 0) == 0) ms += profile.totalMs[k];
-  }
-  return ms;
-}
-
-double median(std::vector<double> values) {
-  if (values.empty()) return 0.0;
-  std::sort(values.begin(), values.end());
-  const std::size_t n = values.size();
-  return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-}
 
 struct TearingBenchRow {
   std::string lines;
@@ -67,10 +53,10 @@ TearingBenchRow measure(const TearingBenchOptions& options, const std::string& l
     for (int s = 0; s < options.warmup; ++s) world.step();
     const TearStats before = world.tearStats();
     for (int s = 0; s < options.steps; ++s) {
-      const double tearingBefore = tearingMs(world.profile());
+      const double tearingBefore = world.profile().totalWithPrefix("tear_");
       const double totalBefore = world.profile().total();
       world.step();
-      tearingSamples.push_back(tearingMs(world.profile()) - tearingBefore);
+      tearingSamples.push_back(world.profile().totalWithPrefix("tear_") - tearingBefore);
       stepSamples.push_back(world.profile().total() - totalBefore);
     }
     const TearStats& after = world.tearStats();
@@ -111,11 +97,10 @@ int runTearingBench(const TearingBenchOptions& options) {
     return kExitBadInput;
   }
   std::ostringstream csv;
-  csv << "# weft bench --tearing; machine: " << machineName() << "; cpu: " << cpuModel()
-      << "; cores: " << std::thread::hardware_concurrency() << "; threads: " << options.threads
-      << "; git: " << gitDescribe() << "; date: " << utcDate() << "; scene: sheet-pulled-apart, " << options.resolution
-      << "^2, " << options.warmup << " warm-up steps, " << options.steps << " timed steps x " << options.repeats
-      << " repeats\n";
+  csv << benchCsvMachineLine("weft bench --tearing", options.threads,
+                             "sheet-pulled-apart, " + std::to_string(options.resolution) + "^2, " +
+                                 std::to_string(options.warmup) + " warm-up steps, " + std::to_string(options.steps) +
+                                 " timed steps x " + std::to_string(options.repeats) + " repeats");
   csv << "lines,skip_by_bound,vertices,median_tearing_ms_per_step,median_step_ms,tearing_share,tears_per_repeat,"
          "skipped_vertex_share,lines_evaluated_per_step\n";
   for (const auto& r : rows) {

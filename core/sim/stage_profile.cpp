@@ -17,4 +17,12 @@ void StageProfile::add(const std::string& name, double ms) {
 
 double StageProfile::total() const { return std::accumulate(totalMs.begin(), totalMs.end(), 0.0); }
 
+double StageProfile::totalWithPrefix(const std::string& prefix) const {
+  double ms = 0.0;
+  for (std::size_t k = 0; k < names.size(); ++k) {
+    if (names[k].rfind(prefix, 0) == 0) ms += totalMs[k];
+  }
+  return ms;
+}
+
 }  // namespace weft

@@ -12,6 +12,8 @@ struct StageProfile {
 
   void add(const std::string& name, double ms);
   double total() const;
+  // The total of the stages whose names start with `prefix` ("contact_", "tear_").
+  double totalWithPrefix(const std::string& prefix) const;
 };
 
 // Times a scope into one stage of a profile.
