@@ -2,6 +2,7 @@
 
 #include <cassert>
 #include <cstring>
+#include <vector>
 
 #include <cholmod.h>
 
@@ -16,6 +17,9 @@ struct SparseCholesky::Cholmod {
   cholmod_dense* solution = nullptr;
   cholmod_dense* permuted = nullptr;
   cholmod_dense* scratch = nullptr;
+  // Ordering reuse after a pattern grows (see analyze).
+  double freshFactorNonZerosPerRow = 0.0;  // of the last fresh nested-dissection ordering
+  int reusesLeft = 0;
 };
 
 namespace {
@@ -67,12 +71,41 @@ SparseCholesky::~SparseCholesky() {
   cholmod_finish(&c);
 }
 
+namespace {
+
+// A pattern that only grew (a tear appends vertices: the old unknowns keep their numbers) keeps
+// its fill-reducing ordering, the new unknowns placed last: nested dissection is most of the
+// analysis' cost, and a tear changes the graph locally. The ordering is redone from scratch when
+// the fill has grown by a quarter over the fresh ordering's (per row), or after this many reuses.
+constexpr int kMaxOrderingReuses = 64;
+constexpr double kMaxFillGrowth = 1.25;
+
+}  // namespace
+
 void SparseCholesky::analyze(const SystemMatrix::Sparse& A) {
   cholmod_common& c = cholmod_->common;
+  const std::size_t n = static_cast<std::size_t>(A.rows());
+  std::vector<int> given;
+  const cholmod_factor* old = cholmod_->factor;
+  if (old != nullptr && old->Perm != nullptr && old->n <= n && cholmod_->reusesLeft > 0) {
+    const int* perm = static_cast<const int*>(old->Perm);
+    given.assign(perm, perm + old->n);
+    for (std::size_t k = old->n; k < n; ++k) given.push_back(static_cast<int>(k));
+  }
   cholmod_free_factor(&cholmod_->factor, &c);
   cholmod_->numeric = false;
   cholmod_sparse view = lowerTriangleView(A);
+  if (!given.empty()) {
+    c.method[0].ordering = CHOLMOD_GIVEN;
+    cholmod_->factor = cholmod_analyze_p(&view, given.data(), nullptr, 0, &c);
+    c.method[0].ordering = CHOLMOD_NESDIS;
+    --cholmod_->reusesLeft;
+    if (cholmod_->factor != nullptr && c.lnz <= kMaxFillGrowth * cholmod_->freshFactorNonZerosPerRow * n) return;
+    cholmod_free_factor(&cholmod_->factor, &c);
+  }
   cholmod_->factor = cholmod_analyze(&view, &c);
+  cholmod_->freshFactorNonZerosPerRow = n > 0 ? c.lnz / static_cast<double>(n) : 0.0;
+  cholmod_->reusesLeft = kMaxOrderingReuses;
 }
 
 bool SparseCholesky::factorize(const SystemMatrix::Sparse& A) {

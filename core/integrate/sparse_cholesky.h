@@ -23,7 +23,9 @@ class SparseCholesky {
   SparseCholesky& operator=(const SparseCholesky&) = delete;
 
   // Fill-reducing ordering (nested dissection) and symbolic factorization: depends on the pattern
-  // only, so it is redone only when the pattern changes.
+  // only, so it is redone only when the pattern changes. A pattern that grew by unknowns appended
+  // at the end (a tear) keeps the previous ordering, the new unknowns last, while the fill stays
+  // within a quarter of a fresh ordering's.
   void analyze(const SystemMatrix::Sparse& A);
   // Numeric factorization of A, which must have the analyzed pattern; reads the lower triangle.
   // Returns false when A is not numerically positive definite (the factor is then unusable).
