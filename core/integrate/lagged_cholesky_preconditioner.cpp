@@ -39,28 +39,12 @@ void LaggedCholeskyPreconditioner::refactor(const SystemMatrix& A) {
   if (usingFallback_) fallback_.prepare(A);
 }
 
-bool LaggedCholeskyPreconditioner::canExtend(const SystemMatrix& A) const {
-  return !usingFallback_ && cholesky_.hasFactor() && A.matrix().rows() > seenSize_ && seenSize_ > 0;
-}
-
-void LaggedCholeskyPreconditioner::refreshFactor(const SystemMatrix& A) {
-  if (extended_ || A.patternVersion() != analyzedPatternVersion_ || A.matrix().rows() != analyzedSize_) {
-    analyze(A);
-    extended_ = false;
-  }
-  refactor(A);
-}
-
 void LaggedCholeskyPreconditioner::prepare(const SystemMatrix& A) {
-  const bool patternChanged = A.patternVersion() != seenPatternVersion_ || A.matrix().rows() != seenSize_;
-  const bool extend = patternChanged && canExtend(A);
-  seenPatternVersion_ = A.patternVersion();
-  seenSize_ = A.matrix().rows();
-  if (extend) extended_ = true;
-  if (extended_) fallback_.prepare(A);  // the new unknowns' blocks, of this matrix
-  if ((patternChanged && !extend) || usingFallback_ || !cholesky_.hasFactor() || upFrontRefactorsLeft_ > 0) {
+  const bool patternChanged = A.patternVersion() != analyzedPatternVersion_ || A.matrix().rows() != analyzedSize_;
+  if (patternChanged) analyze(A);
+  if (patternChanged || usingFallback_ || !cholesky_.hasFactor() || upFrontRefactorsLeft_ > 0) {
     upFrontRefactorsLeft_ = std::max(0, upFrontRefactorsLeft_ - 1);
-    refreshFactor(A);
+    refactor(A);
   } else {
     factorIsCurrent_ = false;  // try the old factor
   }
@@ -72,7 +56,7 @@ bool LaggedCholeskyPreconditioner::refreshIfStale(const SystemMatrix& A, int ite
   // The old factor failed: the matrix is changing fast. Factor up front for a while.
   upFrontRefactorsLeft_ = probeInterval_;
   probeInterval_ = std::min(2 * probeInterval_, kMaxProbeInterval);
-  refreshFactor(A);
+  refactor(A);
   return true;
 }
 
@@ -89,15 +73,7 @@ void LaggedCholeskyPreconditioner::apply(const Eigen::VectorXd& inR, Eigen::Vect
     fallback_.apply(inR, outZ);
     return;
   }
-  if (!extended_) {
-    cholesky_.solve(inR, outZ);
-    return;
-  }
-  // Block Jacobi everywhere, then the old factor over the unknowns it knows.
-  fallback_.apply(inR, outZ);
-  headIn_ = inR.head(analyzedSize_);
-  cholesky_.solve(headIn_, headOut_);
-  outZ.head(analyzedSize_) = headOut_;
+  cholesky_.solve(inR, outZ);
 }
 
 }  // namespace weft

@@ -24,12 +24,6 @@
 //
 // If a factorization fails (A not numerically positive definite), that solve falls back to block
 // Jacobi and the next one factors again.
-//
-// After a tear the pattern has grown (new vertices are appended; the old keep their numbers). A
-// tearing cloth would then refactor every step, the most expensive thing a step does. Instead the
-// old factor is kept for the old unknowns and the new ones get block Jacobi: M = old factor (+)
-// Jacobi blocks, still SPD, so the CG converges; it is treated as an old factor (the stale limit
-// decides when to analyze the new pattern and factor it).
 #include "integrate/block_jacobi_preconditioner.h"
 #include "integrate/preconditioner.h"
 #include "integrate/sparse_cholesky.h"
@@ -59,10 +53,6 @@ class LaggedCholeskyPreconditioner final : public Preconditioner {
   bool dropsWeakCouplings(const SystemMatrix& A) const;
   void analyze(const SystemMatrix& A);
   void refactor(const SystemMatrix& A);
-  // Analyzes first if the factor is of an older pattern (extended), then refactors.
-  void refreshFactor(const SystemMatrix& A);
-  // The pattern grew and a factor of the old one exists: keep it, block Jacobi for the new rows.
-  bool canExtend(const SystemMatrix& A) const;
 
   Factored factored_;
   SparseCholesky cholesky_;
@@ -70,10 +60,6 @@ class LaggedCholeskyPreconditioner final : public Preconditioner {
   BlockJacobiPreconditioner fallback_;
   int analyzedPatternVersion_ = -1;
   Eigen::Index analyzedSize_ = -1;
-  int seenPatternVersion_ = -1;   // of the matrix of the previous solve
-  Eigen::Index seenSize_ = -1;
-  bool extended_ = false;         // the factor covers the first analyzedSize_ unknowns only
-  Eigen::VectorXd headIn_, headOut_;
   int factorizationCostInIterations_ = kMinFactorizationCostInIterations;
   int freshIterations_ = 0;        // iterations of the last solve that started with a fresh factor
   bool startedFresh_ = false;      // this solve started with a factor of its own matrix

@@ -269,59 +269,6 @@ TEST(LaggedCholesky, KeepsAGoodFactorRefactorsAStaleOneAndAfterAPatternChange) {
   }
 }
 
-TEST(LaggedCholesky, AfterAPatternGrowsByNewUnknownsKeepsTheOldFactorForTheOldOnes) {
-  // A tear appends vertices: the old factor serves the old unknowns, block Jacobi the new ones,
-  // and the CG still reaches the exact solution; a stale result then analyzes the new pattern.
-  for (auto factored : {LaggedCholeskyPreconditioner::Factored::WholeMatrix,
-                        LaggedCholeskyPreconditioner::Factored::StrongCouplings}) {
-    SCOPED_TRACE(factored == LaggedCholeskyPreconditioner::Factored::WholeMatrix ? "whole matrix" : "strong couplings");
-    GridPattern g = gridPattern(8);
-    SystemMatrix A = patternOf(g);
-    const double tolerance = 1e-10;
-    PreconditionedConjugateGradient cg(tolerance, 5000);
-    LaggedCholeskyPreconditioner lagged(factored);
-    auto solve = [&](const SystemMatrix& matrix, unsigned seed) {
-      const Eigen::VectorXd b = randomVector(matrix.matrix().rows(), seed);
-      Eigen::VectorXd x = Eigen::VectorXd::Zero(b.size());
-      const LinearSolveResult result = cg.solve(matrix, b, 0.0, lagged, x);
-      EXPECT_TRUE(result.converged);
-      EXPECT_LT((x - denseSolve(matrix, b)).norm(), 1e-5 * x.norm());
-      return result;
-    };
-    fillStiffSystem(A, g, 1, 1e4, 10.0);
-    solve(A, 11);
-    ASSERT_EQ(lagged.factorizations(), 1);
-
-    // Two vertices appended, each coupled to two old ones (as the copies of a torn vertex are);
-    // the old couplings keep their values.
-    const int n = g.side * g.side;
-    GridPattern more = g;
-    const std::pair<int, int> added[] = {{10, n}, {11, n}, {20, n + 1}, {21, n + 1}};
-    for (const auto& pair : added) more.strong.push_back(pair);
-    SystemMatrix grown;
-    grown.setPattern(n + 2, more.strong, more.weak);
-    fillStiffSystem(grown, g, 1, 1e4, 10.0);  // the old pairs, the same values; every diagonal
-    for (const auto& [i, j] : added) {
-      const Mat3 k = 10.0 * Mat3::Identity();  // soft: this small system factors in few iterations
-      grown.addBlock(i, i, k);
-      grown.addBlock(j, j, k);
-      grown.addBlock(i, j, -k);
-      grown.addBlock(j, i, -k);
-    }
-    const LinearSolveResult extended = solve(grown, 12);
-    EXPECT_EQ(lagged.factorizations(), 1) << "the old factor was kept";
-    EXPECT_LT(extended.iterations, lagged.staleIterationLimit());
-
-    // A very different matrix on the grown pattern: the stale limit analyzes and factors it.
-    fillStiffSystem(grown, more, 5, 1e4, 10.0);
-    solve(grown, 13);
-    EXPECT_EQ(lagged.factorizations(), 2);
-    // Now fresh for the grown pattern: the same matrix again needs no new factor.
-    solve(grown, 14);
-    EXPECT_EQ(lagged.factorizations(), 2);
-  }
-}
-
 // Whole cloth steps: every preconditioner gives the direct solver's step.
 TEST(LinearSolvers, EveryPreconditionerGivesTheDirectSolversClothStep) {
   const Material royal = loadMaterialFile(test::presetPath("royal-target"));
