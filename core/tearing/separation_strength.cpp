@@ -25,7 +25,7 @@ Vec2 gAt(double theta) { return Vec2(std::sin(theta), -std::cos(theta)); }
 // (length <= 2 pi), with g at the arc's ends given: each sector's overlap with the arc is at most
 // two pieces (the second when it wraps past the arc's start), and each piece ends at a sector edge
 // or at an arc end, where g is known.
-Vec2 arcForce(const VertexFan& fan, double from, double length, const Vec2& gFrom, const Vec2& gTo) {
+Vec2 arcForce(const StressFan& fan, double from, double length, const Vec2& gFrom, const Vec2& gTo) {
   Vec2 force = Vec2::Zero();
   const double to = from + length;
   for (const FanSector& sector : fan.sectors) {
@@ -81,8 +81,8 @@ std::vector<TriangleCorners> triangleCorners(const ClothMesh& mesh) {
   return corners;
 }
 
-void vertexFan(const ClothMesh& mesh, int vertex, std::span<const int> around,
-               const std::vector<TriangleCorners>& corners, const std::vector<Mat2>& triangleStress, VertexFan& fan) {
+void stressFan(const ClothMesh& mesh, int vertex, std::span<const int> around,
+               const std::vector<TriangleCorners>& corners, const std::vector<Mat2>& triangleStress, StressFan& fan) {
   fan.sectors.clear();
   fan.closed = true;
   fan.openStart = 0.0;
@@ -114,7 +114,7 @@ FanSector makeSector(double start, double span, const Mat2& stress) {
   return sector;
 }
 
-double separationStrength(const VertexFan& fan, double angle) {
+double separationStrength(const StressFan& fan, double angle) {
   const Vec2 gLine = gAt(angle);
   if (fan.closed) {
     // Side 1 lies counter-clockwise of the line's direction, side 2 clockwise (Figure 2.9);
@@ -131,7 +131,7 @@ double separationStrength(const VertexFan& fan, double angle) {
   return balancedPull(q1, q2);
 }
 
-double separationStrengthBound(const VertexFan& fan) {
+double separationStrengthBound(const StressFan& fan) {
   // sigma+ is positive semi-definite: its spectral norm is its largest principal stress.
   double weighted = 0.0, totalSpan = 0.0;
   Mat2 mean = Mat2::Zero();

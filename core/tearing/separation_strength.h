@@ -42,10 +42,10 @@ struct FanSector {
 // (cos theta, sin theta).
 inline Vec2 normalIntegral(const Vec2& unitDirection) { return Vec2(unitDirection.y(), -unitDirection.x()); }
 
-// A sector from the angles alone (tests); vertexFan builds them from the edges.
+// A sector from the angles alone (tests); stressFan builds them from the edges.
 FanSector makeSector(double start, double span, const Mat2& stress);
 
-struct VertexFan {
+struct StressFan {
   std::vector<FanSector> sectors;
   bool closed = true;     // the sectors go all around (interior vertex)
   double openStart = 0.0;  // not closed: the fan covers [openStart, openStart + openSpan] ccw
@@ -63,16 +63,16 @@ void updateTriangleCorners(const ClothMesh& mesh, const std::vector<int>& triang
 std::vector<TriangleCorners> triangleCorners(const ClothMesh& mesh);
 
 // `outFan` is reused (no allocation once it has grown).
-void vertexFan(const ClothMesh& mesh, int vertex, std::span<const int> around,
-               const std::vector<TriangleCorners>& corners, const std::vector<Mat2>& triangleStress, VertexFan& outFan);
+void stressFan(const ClothMesh& mesh, int vertex, std::span<const int> around,
+               const std::vector<TriangleCorners>& corners, const std::vector<Mat2>& triangleStress, StressFan& outFan);
 
 // zeta (N/m) for the line through the vertex at `angle` (rad, material space; for an open fan,
 // the ray at `angle`, which must lie inside the fan).
-double separationStrength(const VertexFan& fan, double angle);
+double separationStrength(const StressFan& fan, double angle);
 
 // An upper bound of separationStrength over every line or ray: |q| of an arc is at most the
 // largest principal stress times the arc's angle, and min(|q1|, |q2|) at most their mean. A vertex
 // whose bound is below the weakest required strength cannot tear in any direction.
-double separationStrengthBound(const VertexFan& fan);
+double separationStrengthBound(const StressFan& fan);
 
 }  // namespace weft

@@ -15,7 +15,7 @@ namespace {
 constexpr double kRadToDeg = 180.0 / std::numbers::pi;
 
 // omega of one line, all of it evaluated.
-TearCandidate evaluateLine(const VertexFan& fan, double angle, double zeta, const TearTable& table,
+TearCandidate evaluateLine(const StressFan& fan, double angle, double zeta, const TearTable& table,
                            double weftAngleRad) {
   TearCandidate line;
   line.angle = angle;
@@ -29,7 +29,7 @@ TearCandidate evaluateLine(const VertexFan& fan, double angle, double zeta, cons
 // Replaces `best` by the line at `angle` if its omega is higher. omega <= zeta / (the weakest
 // strength), so a line whose zeta cannot beat `best` skips the direction and table lookups (the
 // margin covers rounding: the result is the same as evaluating everything).
-void keepIfBetter(const VertexFan& fan, double angle, const TearTable& table, double weakest, double weftAngleRad,
+void keepIfBetter(const StressFan& fan, double angle, const TearTable& table, double weakest, double weftAngleRad,
                   TearCandidate& best) {
   const double zeta = separationStrength(fan, angle);
   if (zeta < best.ratio * weakest * (1.0 - 1e-12)) return;
@@ -39,7 +39,7 @@ void keepIfBetter(const VertexFan& fan, double angle, const TearTable& table, do
 
 // The thesis' lines: both edges and the bisector of each incident corner. On an open fan the
 // border edges are skipped (a ray along the border separates nothing).
-TearCandidate bestThesisLine(const VertexFan& fan, const TearTable& table, double weakest, double weftAngleRad,
+TearCandidate bestThesisLine(const StressFan& fan, const TearTable& table, double weakest, double weftAngleRad,
                              TearSearchCounts& counts) {
   TearCandidate best;
   for (const FanSector& sector : fan.sectors) {
@@ -53,7 +53,7 @@ TearCandidate bestThesisLine(const VertexFan& fan, const TearTable& table, doubl
 
 // Dense sampling of the fan, then a golden-section search on omega between the best sample's
 // neighbours (omega need not be unimodal there; the search only improves on the sample).
-TearCandidate bestDenseLine(const VertexFan& fan, const TearTable& table, double weakest, double weftAngleRad,
+TearCandidate bestDenseLine(const StressFan& fan, const TearTable& table, double weakest, double weftAngleRad,
                             int samples, TearSearchCounts& counts) {
   const double from = fan.closed ? 0.0 : fan.openStart;
   const double range = fan.closed ? std::numbers::pi : fan.openSpan;
@@ -111,16 +111,16 @@ void findTearCandidates(const ClothMesh& mesh, const std::vector<TriangleCorners
     for (int v : mesh.tris[t].v) around[fill[v]++] = t;
   }
   const double weakest = weakestStrength(table);
-  auto fanOf = [&](int v, VertexFan& fan) {
-    vertexFan(mesh, v, std::span<const int>(around.data() + rowStart[v], around.data() + rowStart[v + 1]), corners,
+  auto fanOf = [&](int v, StressFan& fan) {
+    stressFan(mesh, v, std::span<const int>(around.data() + rowStart[v], around.data() + rowStart[v + 1]), corners,
               triangleStress, fan);
   };
-  auto bestLineOf = [&](const VertexFan& fan) {
+  auto bestLineOf = [&](const StressFan& fan) {
     return settings.lines == CandidateLines::Thesis
                ? bestThesisLine(fan, table, weakest, weftAngleRad, counts)
                : bestDenseLine(fan, table, weakest, weftAngleRad, settings.denseDirections, counts);
   };
-  auto candidateOf = [&](int v, const VertexFan& fan, TearCandidate best) {
+  auto candidateOf = [&](int v, const StressFan& fan, TearCandidate best) {
     best.vertex = v;
     const Triangle& first = mesh.tris[around[rowStart[v]]];
     best.restPosition = first.rest[first.v[0] == v ? 0 : first.v[1] == v ? 1 : 2];
@@ -129,7 +129,7 @@ void findTearCandidates(const ClothMesh& mesh, const std::vector<TriangleCorners
   };
   // The vertices that may reach omega = 1 (all of them without the bound), with their bounds.
   // The margin covers the rounding of the bound itself, so the skip never changes a result.
-  VertexFan fan;
+  StressFan fan;
   std::vector<std::pair<double, int>> open;  // (bound on omega, vertex)
   for (int v = 0; v < n; ++v) {
     if (rowStart[v] == rowStart[v + 1]) continue;

@@ -16,8 +16,8 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 
 // A closed fan of n equal sectors starting at `offset`, all with the same stress.
-VertexFan regularFan(int n, const Mat2& stress, double offset = 0.1) {
-  VertexFan fan;
+StressFan regularFan(int n, const Mat2& stress, double offset = 0.1) {
+  StressFan fan;
   for (int k = 0; k < n; ++k) fan.sectors.push_back(makeSector(offset + 2.0 * kPi * k / n, 2.0 * kPi / n, stress));
   fan.closed = true;
   fan.openSpan = 2.0 * kPi;
@@ -25,8 +25,8 @@ VertexFan regularFan(int n, const Mat2& stress, double offset = 0.1) {
 }
 
 // A border vertex on a straight border along x, material below it (angles from pi to 2 pi).
-VertexFan borderFan(int n, const Mat2& stress) {
-  VertexFan fan;
+StressFan borderFan(int n, const Mat2& stress) {
+  StressFan fan;
   for (int k = 0; k < n; ++k) fan.sectors.push_back(makeSector(kPi + kPi * k / n, kPi / n, stress));
   fan.closed = false;
   fan.openStart = kPi;
@@ -43,18 +43,18 @@ TEST(SeparationStrength, UniformStressGivesTheTractionAcrossTheLine) {
   // Eq. 2.69-2.71 normalized: zeta = |sigma n| for any fan of a uniform stress.
   const double T = 300.0;
   for (int sectors : {5, 6, 8, 13}) {
-    const VertexFan fan = regularFan(sectors, uniaxial(T, 0.0));
+    const StressFan fan = regularFan(sectors, uniaxial(T, 0.0));
     for (double beta = 0.0; beta < kPi; beta += 0.1) {
       EXPECT_NEAR(separationStrength(fan, beta), T * std::abs(std::sin(beta)), 1e-9 * T)
           << sectors << " sectors, line at " << beta;
     }
   }
-  const VertexFan isotropic = regularFan(6, 50.0 * Mat2::Identity());
+  const StressFan isotropic = regularFan(6, 50.0 * Mat2::Identity());
   for (double beta = 0.0; beta < kPi; beta += 0.3) EXPECT_NEAR(separationStrength(isotropic, beta), 50.0, 1e-9);
 }
 
 TEST(SeparationStrength, LinePerpendicularToThePullSeparatesMost) {
-  const VertexFan fan = regularFan(6, uniaxial(100.0, 0.7));
+  const StressFan fan = regularFan(6, uniaxial(100.0, 0.7));
   const double across = separationStrength(fan, 0.7 + kPi / 2);
   EXPECT_NEAR(across, 100.0, 1e-9);
   EXPECT_NEAR(separationStrength(fan, 0.7), 0.0, 1e-9) << "a line along the pull relieves nothing";
@@ -63,7 +63,7 @@ TEST(SeparationStrength, LinePerpendicularToThePullSeparatesMost) {
 
 TEST(SeparationStrength, ABorderRayCountsOnce) {
   // Tension along the border: the ray straight into the cloth opens it with the full traction.
-  const VertexFan fan = borderFan(4, uniaxial(80.0, 0.0));
+  const StressFan fan = borderFan(4, uniaxial(80.0, 0.0));
   EXPECT_NEAR(separationStrength(fan, 1.5 * kPi), 80.0, 1e-9);
   // Along the border itself nothing is on one side.
   EXPECT_NEAR(separationStrength(fan, kPi + 1e-12), 0.0, 1e-6);
@@ -74,7 +74,7 @@ TEST(SeparationStrength, CompressionAndUnbalancedLoadsDoNotSeparate) {
   const Mat2 compressed = tensilePart(-200.0 * Mat2::Identity());
   EXPECT_TRUE(compressed.isZero());
   // Only one side pulls (its sectors stressed, the other side's free): an unbalanced load.
-  VertexFan fan = regularFan(6, Mat2::Zero(), 0.0);
+  StressFan fan = regularFan(6, Mat2::Zero(), 0.0);
   for (int k = 0; k < 3; ++k) fan.sectors[k].stress = uniaxial(100.0, kPi / 2);
   EXPECT_DOUBLE_EQ(separationStrength(fan, 0.0), 0.0);
 }
@@ -108,7 +108,7 @@ TEST(SeparationStrength, TheBoundIsNeverExceeded) {
     std::vector<double> weights(n);
     double sum = 0.0;
     for (double& w : weights) sum += (w = 0.2 + unit(rng));
-    VertexFan fan;
+    StressFan fan;
     fan.closed = closed;
     fan.openStart = 2.0 * kPi * unit(rng);
     fan.openSpan = total;
