@@ -60,8 +60,8 @@ struct SweptMesh {
 // Recomputes the triangle boxes (x0, x1, grown by `margin`), the feature boxes and the fixed
 // planes. Builds the BVH
 // and the topology-derived features if the mesh's triangles differ from those they were built for
-// (first use, or a tear or cut, even one that keeps the triangle count; a few milliseconds for an
-// 8k-triangle mesh), and refits the BVH otherwise.
+// (first use, a change nobody patched with patchSweptMesh, or one after which the patch policy
+// asked for a fresh build; about 2 ms for an 8k-triangle mesh), and refits the BVH otherwise.
 void updateSweptMesh(SweptMesh& swept, double margin);
 
 // After editCollisionMesh changed swept.mesh: patches what updateSweptMesh built from the topology
