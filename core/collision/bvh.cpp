@@ -67,6 +67,9 @@ class NodePairStack {
 void Bvh::build(const std::vector<Aabb>& boxes) {
   const int n = static_cast<int>(boxes.size());
   nodes_.clear();
+  boxCount_ = builtBoxCount_ = n;
+  largestLeaf_ = std::min(n, kMaxLeafSize);
+  leafOfBox_.resize(n);
   leafOrder_.resize(n);
   std::iota(leafOrder_.begin(), leafOrder_.end(), 0);
   slotBoxes_.resize(n);
@@ -97,6 +100,7 @@ void Bvh::build(const std::vector<Aabb>& boxes) {
     if (count <= kMaxLeafSize) {
       nodes_[index].first = task.begin;
       nodes_[index].count = count;
+      for (int s = task.begin; s < task.end; ++s) leafOfBox_[leafOrder_[s]] = index;
       continue;
     }
     Aabb centreBounds;
@@ -118,10 +122,33 @@ void Bvh::build(const std::vector<Aabb>& boxes) {
 }
 
 void Bvh::refit(const std::vector<Aabb>& boxes) {
-  assert(boxes.size() == leafOrder_.size() && "refit needs the box count the tree was built with");
+  assert(static_cast<int>(boxes.size()) == boxCount_ && "refit needs the box count of the tree");
+  // Every slot, unused ones too (they hold valid box ids): one plain loop.
   const int n = static_cast<int>(leafOrder_.size());
   for (int s = 0; s < n; ++s) slotBoxes_[s] = boxes[leafOrder_[s]];
   refitNodes();
+}
+
+void Bvh::insert(int nearBox) {
+  assert(!nodes_.empty() && nearBox >= 0 && nearBox < boxCount_);
+  const int box = boxCount_++;
+  const int leaf = leafOfBox_[nearBox];
+  Node& node = nodes_[leaf];
+  const int slots = static_cast<int>(leafOrder_.size());
+  if (node.first + node.count != slots) {
+    for (int s = node.first; s < node.first + node.count; ++s) leafOrder_.push_back(leafOrder_[s]);
+    node.first = slots;
+  }
+  leafOrder_.push_back(box);
+  ++node.count;
+  slotBoxes_.resize(leafOrder_.size());
+  leafOfBox_.push_back(leaf);
+  largestLeaf_ = std::max(largestLeaf_, node.count);
+}
+
+bool Bvh::needsRebuild() const {
+  return largestLeaf_ > kMaxGrownLeafSize || 4 * (boxCount_ - builtBoxCount_) > builtBoxCount_ ||
+         static_cast<int>(leafOrder_.size()) > 2 * boxCount_;
 }
 
 void Bvh::refitNodes() {
@@ -138,8 +165,6 @@ void Bvh::refitNodes() {
     node.box = box;
   }
 }
-
-int Bvh::leafCount() const { return static_cast<int>(leafOrder_.size()); }
 
 const Aabb& Bvh::bounds() const {
   static const Aabb kEmpty;  // immutable: the empty box every empty tree reports
@@ -161,8 +186,15 @@ void Bvh::traverse(const Bvh& other, bool selfQuery, const std::function<void(in
   if (selfQuery || boxesOverlap(nodes_[0].box, other.nodes_[0].box)) stack.push(0, 0);
   // The box pairs of a leaf pair are tested first and the overlapping ones visited after: about
   // half of them overlap in a cloth, a coin flip no branch predictor can learn, so the tests
-  // write every candidate and only advance past the overlapping ones.
-  std::array<std::pair<int, int>, kMaxLeafSize * kMaxLeafSize> found;
+  // write every candidate and only advance past the overlapping ones. A leaf grown by insertions
+  // may hold more pairs than the buffer: it is emptied when full (a branch never taken for leaves
+  // of the build size, so the predictor learns it).
+  std::array<std::pair<int, int>, kMaxGrownLeafSize * kMaxGrownLeafSize> found;
+  int count = 0;
+  auto flush = [&] {
+    for (int k = 0; k < count; ++k) visit(found[k].first, found[k].second);
+    count = 0;
+  };
   while (!stack.empty()) {
     const auto [a, b] = stack.pop();
     const Node& na = nodes_[a];
@@ -170,15 +202,15 @@ void Bvh::traverse(const Bvh& other, bool selfQuery, const std::function<void(in
 
     if (selfQuery && a == b) {
       if (na.isLeaf()) {
-        int count = 0;
         for (int s = na.first; s < na.first + na.count; ++s) {
           for (int t = s + 1; t < na.first + na.count; ++t) {
+            if (count == static_cast<int>(found.size())) flush();
             const int i = leafOrder_[s], j = leafOrder_[t];
             found[count] = {std::min(i, j), std::max(i, j)};
             count += overlapFlag(slotBoxes_[s], slotBoxes_[t]);
           }
         }
-        for (int k = 0; k < count; ++k) visit(found[k].first, found[k].second);
+        flush();
       } else {
         const int left = a + 1, right = na.first;
         stack.push(right, right);
@@ -189,17 +221,17 @@ void Bvh::traverse(const Bvh& other, bool selfQuery, const std::function<void(in
     }
 
     if (na.isLeaf() && nb.isLeaf()) {
-      int count = 0;
       for (int s = na.first; s < na.first + na.count; ++s) {
         const Aabb& boxS = slotBoxes_[s];
         const int i = leafOrder_[s];
         for (int t = nb.first; t < nb.first + nb.count; ++t) {
+          if (count == static_cast<int>(found.size())) flush();
           const int j = other.leafOrder_[t];
           found[count] = selfQuery ? std::pair(std::min(i, j), std::max(i, j)) : std::pair(i, j);
           count += overlapFlag(boxS, other.slotBoxes_[t]);
         }
       }
-      for (int k = 0; k < count; ++k) visit(found[k].first, found[k].second);
+      flush();
       continue;
     }
 

@@ -1,7 +1,15 @@
 #pragma once
 // A bounding volume hierarchy over axis-aligned boxes (the swept boxes of a mesh's triangles over
 // a step: start and end positions, grown by the contact thickness). Built once per topology,
-// refitted every step. Queries report overlapping leaf pairs in a deterministic order.
+// refitted every step, and grown locally after a tear (insert). Queries report overlapping leaf
+// pairs in a deterministic order.
+//
+// Growth policy: an inserted box joins an existing leaf (the caller names a box next to it), so
+// the tree keeps its shape and the next refit fixes the boxes; leaves may grow past the build
+// size. A grown leaf's slots move to the end of the slot array unless they are there already
+// (the slots left behind stay valid but unused). needsRebuild() says when the tree has drifted
+// too far from a fresh build: a leaf above kMaxGrownLeafSize boxes, more boxes inserted than a
+// quarter of those built with, or more unused slots than boxes.
 #include <functional>
 #include <limits>
 #include <vector>
@@ -25,7 +33,12 @@ class Bvh {
   void build(const std::vector<Aabb>& boxes);
   // Same number of boxes, new extents: updates the tree bottom-up without changing its shape.
   void refit(const std::vector<Aabb>& boxes);
-  int leafCount() const;
+  // Adds box leafCount() to the leaf holding box `nearBox` (the tree must not be empty). Its
+  // extent comes with the next refit.
+  void insert(int nearBox);
+  bool needsRebuild() const;
+  static constexpr int kMaxGrownLeafSize = 16;  // boxes in a leaf beyond which needsRebuild()
+  int leafCount() const { return boxCount_; }
   bool empty() const { return leafCount() == 0; }
   const Aabb& bounds() const;  // box of the whole tree (empty box when the tree is empty)
 
@@ -52,6 +65,10 @@ class Bvh {
   std::vector<Node> nodes_;      // nodes_[0] is the root (empty vector: empty tree)
   std::vector<int> leafOrder_;   // box id in each leaf slot; a leaf's boxes are contiguous slots
   std::vector<Aabb> slotBoxes_;  // the box of each slot (box leafOrder_[s]), contiguous per leaf
+  std::vector<int> leafOfBox_;   // the leaf node holding each box
+  int boxCount_ = 0;
+  int builtBoxCount_ = 0;        // boxes at the last build
+  int largestLeaf_ = 0;          // boxes in the largest leaf
 };
 
 }  // namespace weft

@@ -5,6 +5,8 @@
 #include <cassert>
 #include <cmath>
 #include <cstdint>
+#include <iterator>
+#include <tuple>
 
 #include <Eigen/Geometry>
 
@@ -134,66 +136,72 @@ FixedPlane fixedPlane(const std::array<int, 3>& corners, const std::vector<Vec3>
   return plane;
 }
 
+// The vertices (or edges) of triangle t that it owns, in corner (or side) order.
+void ownedBy(int t, const std::array<int, 3>& featuresOfTriangle, const std::vector<int>& owner,
+             std::vector<int>& out) {
+  out.clear();
+  for (int feature : featuresOfTriangle) {
+    if (owner[feature] == t) out.push_back(feature);
+  }
+}
+
 // Groups the vertices (or edges) by owning triangle: the topology half of OwnedFeatures.
 void groupByOwner(const std::vector<std::array<int, 3>>& featuresOfTriangle, const std::vector<int>& owner,
                   OwnedFeatures& owned) {
   const int triangleCount = static_cast<int>(featuresOfTriangle.size());
-  owned.start.assign(triangleCount + 1, 0);
-  owned.ids.clear();
+  TriangleRuns<int>& runs = owned.ids;
+  runs.clear(triangleCount);
+  std::vector<int> mine;
   for (int t = 0; t < triangleCount; ++t) {
-    for (int feature : featuresOfTriangle[t]) {
-      if (owner[feature] == t) owned.ids.push_back(feature);
-    }
-    owned.start[t + 1] = static_cast<int>(owned.ids.size());
+    ownedBy(t, featuresOfTriangle[t], owner, mine);
+    runs.appendRun(t, mine);
   }
-  owned.boxes.resize(owned.ids.size());
+  owned.boxes.resize(runs.items.size());
 }
 
-// Lists the self-collision candidates of every pair of triangles sharing a corner: the features
-// each owns against the other (a vertex against a face, an edge against an edge), except those
-// touching by topology (the face's own corners, edges sharing a vertex).
+// The self-collision candidates of triangle i with every later triangle sharing a corner: the
+// features each owns against the other (a vertex against a face, an edge against an edge), except
+// those touching by topology (the face's own corners, edges sharing a vertex).
+void neighbourCandidatesOf(const CollisionMesh& mesh, const SweptFeatures& features, int i,
+                           std::vector<int>& neighbours, std::vector<std::array<int, 2>>& vertexFace,
+                           std::vector<std::array<int, 2>>& edgeEdge) {
+  neighbours.clear();
+  vertexFace.clear();
+  edgeEdge.clear();
+  for (int v : mesh.triangles[i]) {
+    const std::vector<int>& around = mesh.trianglesAround[v];
+    neighbours.insert(neighbours.end(), std::upper_bound(around.begin(), around.end(), i), around.end());
+  }
+  std::sort(neighbours.begin(), neighbours.end());
+  neighbours.erase(std::unique(neighbours.begin(), neighbours.end()), neighbours.end());
+  const TriangleRuns<int>& vertices = features.vertices.ids;
+  const TriangleRuns<int>& edges = features.edges.ids;
+  for (int j : neighbours) {
+    for (int s = vertices.begin[i]; s < vertices.end[i]; ++s) {
+      if (!isCorner(mesh.triangles[j], vertices.items[s])) vertexFace.push_back({s, j});
+    }
+    for (int s = vertices.begin[j]; s < vertices.end[j]; ++s) {
+      if (!isCorner(mesh.triangles[i], vertices.items[s])) vertexFace.push_back({s, i});
+    }
+    for (int s = edges.begin[i]; s < edges.end[i]; ++s) {
+      for (int t = edges.begin[j]; t < edges.end[j]; ++t) {
+        if (!shareVertex(mesh.edges[edges.items[s]], mesh.edges[edges.items[t]])) edgeEdge.push_back({s, t});
+      }
+    }
+  }
+}
+
+// Lists the self-collision candidates of every pair of triangles sharing a corner.
 void listNeighbourCandidates(const CollisionMesh& mesh, SweptFeatures& features) {
   const int triangleCount = static_cast<int>(mesh.triangles.size());
-  // The triangles around each vertex, in compressed rows.
-  std::vector<int> rowStart(mesh.vertexCount + 1, 0);
-  for (const auto& corners : mesh.triangles) {
-    for (int v : corners) ++rowStart[v + 1];
-  }
-  for (int v = 0; v < mesh.vertexCount; ++v) rowStart[v + 1] += rowStart[v];
-  std::vector<int> fill(rowStart.begin(), rowStart.end() - 1), trianglesAround(rowStart.back());
-  for (int t = 0; t < triangleCount; ++t) {
-    for (int v : mesh.triangles[t]) trianglesAround[fill[v]++] = t;
-  }
-
-  const OwnedFeatures& vertices = features.vertices;
-  const OwnedFeatures& edges = features.edges;
-  features.neighbourVertexFace.clear();
-  features.neighbourEdgeEdge.clear();
+  features.neighbourVertexFace.clear(triangleCount);
+  features.neighbourEdgeEdge.clear(triangleCount);
   std::vector<int> neighbours;
+  std::vector<std::array<int, 2>> vertexFace, edgeEdge;
   for (int i = 0; i < triangleCount; ++i) {
-    neighbours.clear();
-    for (int v : mesh.triangles[i]) {
-      for (int k = rowStart[v]; k < rowStart[v + 1]; ++k) {
-        if (trianglesAround[k] > i) neighbours.push_back(trianglesAround[k]);
-      }
-    }
-    std::sort(neighbours.begin(), neighbours.end());
-    neighbours.erase(std::unique(neighbours.begin(), neighbours.end()), neighbours.end());
-    for (int j : neighbours) {
-      for (int s = vertices.start[i]; s < vertices.start[i + 1]; ++s) {
-        if (!isCorner(mesh.triangles[j], vertices.ids[s])) features.neighbourVertexFace.push_back({s, j});
-      }
-      for (int s = vertices.start[j]; s < vertices.start[j + 1]; ++s) {
-        if (!isCorner(mesh.triangles[i], vertices.ids[s])) features.neighbourVertexFace.push_back({s, i});
-      }
-      for (int s = edges.start[i]; s < edges.start[i + 1]; ++s) {
-        for (int t = edges.start[j]; t < edges.start[j + 1]; ++t) {
-          if (!shareVertex(mesh.edges[edges.ids[s]], mesh.edges[edges.ids[t]])) {
-            features.neighbourEdgeEdge.push_back({s, t});
-          }
-        }
-      }
-    }
+    neighbourCandidatesOf(mesh, features, i, neighbours, vertexFace, edgeEdge);
+    features.neighbourVertexFace.appendRun(i, vertexFace);
+    features.neighbourEdgeEdge.appendRun(i, edgeEdge);
   }
 }
 
@@ -237,8 +245,8 @@ void addVertexFacePairs(const SweptMesh& vertices, int owner, const SweptMesh& f
   const Aabb& faceBox = faces.triangleBoxes[face];
   const auto& corners = vertices.mesh->triangles[owner];
   out.reserve(3);
-  for (int s = owned.start[owner]; s < owned.start[owner + 1]; ++s) {
-    const int v = owned.ids[s];
+  for (int s = owned.ids.begin[owner]; s < owned.ids.end[owner]; ++s) {
+    const int v = owned.ids.items[s];
     out.add(overlapGrownFirst(owned.boxes[s], faceBox, margin) & (sideOfCorner(corners, ownerSides, v) == 0),
             {v, face});
   }
@@ -253,15 +261,15 @@ void addEdgeEdgePairs(const SweptMesh& a, int i, const SweptMesh& b, int j, doub
                       PairBatch<EdgeEdgePair>& out) {
   const OwnedFeatures& ownedA = a.features.edges;
   const OwnedFeatures& ownedB = b.features.edges;
-  const int beginB = ownedB.start[j], endB = ownedB.start[j + 1];
+  const int beginB = ownedB.ids.begin[j], endB = ownedB.ids.end[j];
   if (beginB == endB) return;
   out.reserve(9);
   const Aabb& triangleBoxB = b.triangleBoxes[j];
   const auto& cornersA = a.mesh->triangles[i];
   const auto& cornersB = b.mesh->triangles[j];
-  for (int s = ownedA.start[i]; s < ownedA.start[i + 1]; ++s) {
+  for (int s = ownedA.ids.begin[i]; s < ownedA.ids.end[i]; ++s) {
     const Aabb& boxA = ownedA.boxes[s];
-    const int ea = ownedA.ids[s];
+    const int ea = ownedA.ids.items[s];
     const auto& endsA = a.mesh->edges[ea];
     // An edge of i that misses triangle j's box, or stays clear of its plane, misses all of j's edges.
     if (!overlapGrownFirst(boxA, triangleBoxB, margin) ||
@@ -269,7 +277,7 @@ void addEdgeEdgePairs(const SweptMesh& a, int i, const SweptMesh& b, int j, doub
       continue;
     }
     for (int t = beginB; t < endB; ++t) {
-      const int eb = ownedB.ids[t];
+      const int eb = ownedB.ids.items[t];
       const auto& endsB = b.mesh->edges[eb];
       const int keep = overlapGrownBoth(boxA, ownedB.boxes[t], margin) &
                        (edgeClear(sideOfCorner(cornersB, sides.ofB, endsB[0]),
@@ -331,6 +339,11 @@ bool isUpToDate(const SweptMesh& swept) {
   return swept.bvh.leafCount() == triangleCount(swept) && swept.features.triangles == swept.mesh->triangles;
 }
 
+// Built for a mesh of `triangleCount` triangles (patchSweptMesh: the count before the edit).
+bool isUpToDate(const SweptMesh& swept, int triangleCount) {
+  return swept.bvh.leafCount() == triangleCount && static_cast<int>(swept.features.triangles.size()) == triangleCount;
+}
+
 }  // namespace
 
 void updateSweptMesh(SweptMesh& swept, double margin) {
@@ -370,20 +383,88 @@ void updateSweptMesh(SweptMesh& swept, double margin) {
     swept.bvh.refit(swept.triangleBoxes);
   }
 
-  for (size_t s = 0; s < features.vertices.ids.size(); ++s) {
-    const int v = features.vertices.ids[s];
+  // Every slot, stale ones included (they hold valid ids): one plain loop, no run bookkeeping.
+  for (size_t s = 0; s < features.vertices.ids.items.size(); ++s) {
+    const int v = features.vertices.ids.items[s];
     Aabb box;
     box.grow(x0[v]);
     box.grow(x1[v]);
     features.vertices.boxes[s] = box;
   }
-  for (size_t s = 0; s < features.edges.ids.size(); ++s) {
+  for (size_t s = 0; s < features.edges.ids.items.size(); ++s) {
     Aabb box;
-    for (int v : mesh.edges[features.edges.ids[s]]) {
+    for (int v : mesh.edges[features.edges.ids.items[s]]) {
       box.grow(x0[v]);
       box.grow(x1[v]);
     }
     features.edges.boxes[s] = box;
+  }
+}
+
+void patchSweptMesh(SweptMesh& swept, const CollisionMeshChange& change) {
+  SweptFeatures& features = swept.features;
+  if (!isUpToDate(swept, change.oldTriangleCount) || swept.bvh.empty()) return;  // the next update builds
+  const CollisionMesh& mesh = *swept.mesh;
+  const int triangleCount = static_cast<int>(mesh.triangles.size());
+
+  // The triangles whose own runs change: the changed ones and those whose ownership changed.
+  std::vector<int> regrouped;
+  std::set_union(change.changedTriangles.begin(), change.changedTriangles.end(), change.regroupedTriangles.begin(),
+                 change.regroupedTriangles.end(), std::back_inserter(regrouped));
+  // Neighbour runs hold pairs (i, j > i) and read both triangles' corners and owned slots, so
+  // every triangle that shares a corner with a regrouped one, before or after the change, is
+  // redone. A triangle that used an old corner and no longer does is a changed one itself, so the
+  // triangles around each old and new corner now, plus the changed ones, cover them all.
+  std::vector<int> corners;
+  for (size_t k = 0; k < change.changedTriangles.size(); ++k) {
+    for (int v : change.oldCorners[k]) {
+      if (v >= 0) corners.push_back(v);
+    }
+  }
+  for (int t : regrouped) corners.insert(corners.end(), mesh.triangles[t].begin(), mesh.triangles[t].end());
+  std::sort(corners.begin(), corners.end());
+  corners.erase(std::unique(corners.begin(), corners.end()), corners.end());
+  std::vector<int> redo = regrouped;
+  for (int v : corners) redo.insert(redo.end(), mesh.trianglesAround[v].begin(), mesh.trianglesAround[v].end());
+  std::sort(redo.begin(), redo.end());
+  redo.erase(std::unique(redo.begin(), redo.end()), redo.end());
+
+  // The BVH: appended triangles join the leaf of an older neighbour (the lowest one sharing a
+  // corner: the triangle split to make it, or one next to it).
+  for (int t = change.oldTriangleCount; t < triangleCount; ++t) {
+    int near = change.oldTriangleCount;
+    for (int v : mesh.triangles[t]) near = std::min(near, mesh.trianglesAround[v].front());
+    swept.bvh.insert(near < change.oldTriangleCount ? near : 0);  // (no older neighbour: any leaf is correct)
+  }
+
+  features.triangles.resize(triangleCount);
+  for (int t : change.changedTriangles) features.triangles[t] = mesh.triangles[t];
+  std::vector<int> mine;
+  for (auto [owned, featuresOfTriangle, owner] :
+       {std::tuple{&features.vertices, &mesh.triangles, &mesh.vertexOwner},
+        std::tuple{&features.edges, &mesh.triangleEdges, &mesh.edgeOwner}}) {
+    owned->ids.resize(triangleCount);
+    for (int t : regrouped) {
+      ownedBy(t, (*featuresOfTriangle)[t], *owner, mine);
+      owned->ids.replace(t, mine);
+    }
+    owned->boxes.resize(owned->ids.items.size());  // filled by the next updateSweptMesh
+  }
+  features.neighbourVertexFace.resize(triangleCount);
+  features.neighbourEdgeEdge.resize(triangleCount);
+  std::vector<int> neighbours;
+  std::vector<std::array<int, 2>> vertexFace, edgeEdge;
+  for (int i : redo) {
+    neighbourCandidatesOf(mesh, features, i, neighbours, vertexFace, edgeEdge);
+    features.neighbourVertexFace.replace(i, vertexFace);
+    features.neighbourEdgeEdge.replace(i, edgeEdge);
+  }
+
+  // Past these bounds a fresh build is worth its cost: forgetting what was built makes the next
+  // updateSweptMesh build everything from scratch.
+  if (swept.bvh.needsRebuild() || features.vertices.ids.sparse() || features.edges.ids.sparse() ||
+      features.neighbourVertexFace.sparse() || features.neighbourEdgeEdge.sparse()) {
+    features.triangles.clear();
   }
 }
 
@@ -447,16 +528,22 @@ void findSelfCandidatePairs(const SweptMesh& a, double margin, CandidatePairs& o
     processDistant();
     // Triangles sharing a corner: their candidates are listed, only the boxes are tested. (Plane
     // tests would cull few of them: in a smooth sheet neighbours lie in nearly the same plane.)
-    for (const auto& [slot, face] : features.neighbourVertexFace) {
-      vf.reserve(1);
-      vf.add(overlapGrownFirst(features.vertices.boxes[slot], a.triangleBoxes[face], margin),
-             {features.vertices.ids[slot], face});
-    }
-    for (const auto& [slotA, slotB] : features.neighbourEdgeEdge) {
-      ee.reserve(1);
-      const int ea = features.edges.ids[slotA], eb = features.edges.ids[slotB];
-      ee.add(overlapGrownBoth(features.edges.boxes[slotA], features.edges.boxes[slotB], margin),
-             {std::min(ea, eb), std::max(ea, eb)});
+    const TriangleRuns<std::array<int, 2>>& vertexFace = features.neighbourVertexFace;
+    const TriangleRuns<std::array<int, 2>>& edgeEdge = features.neighbourEdgeEdge;
+    for (size_t i = 0; i < triangles.size(); ++i) {
+      for (int k = vertexFace.begin[i]; k < vertexFace.end[i]; ++k) {
+        const auto [slot, face] = vertexFace.items[k];
+        vf.reserve(1);
+        vf.add(overlapGrownFirst(features.vertices.boxes[slot], a.triangleBoxes[face], margin),
+               {features.vertices.ids.items[slot], face});
+      }
+      for (int k = edgeEdge.begin[i]; k < edgeEdge.end[i]; ++k) {
+        const auto [slotA, slotB] = edgeEdge.items[k];
+        ee.reserve(1);
+        const int ea = features.edges.ids.items[slotA], eb = features.edges.ids.items[slotB];
+        ee.add(overlapGrownBoth(features.edges.boxes[slotA], features.edges.boxes[slotB], margin),
+               {std::min(ea, eb), std::max(ea, eb)});
+      }
     }
   }
   sortVertexFacePairs(out.vfAB, triangleCount(a));

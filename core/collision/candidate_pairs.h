@@ -8,28 +8,29 @@
 
 #include "collision/bvh.h"
 #include "collision/collision_mesh.h"
+#include "collision/triangle_runs.h"
 
 namespace weft {
 
 // The vertices or the edges of a mesh grouped by the triangle that owns them (collision_mesh.h),
 // with their swept boxes: a triangle pair reads its candidates from two short contiguous runs.
 struct OwnedFeatures {
-  std::vector<int> start;   // triangle t owns ids[start[t] .. start[t + 1])
-  std::vector<int> ids;     // vertex or edge ids
-  std::vector<Aabb> boxes;  // swept over the step, not grown (the query adds its margin)
+  TriangleRuns<int> ids;    // vertex or edge ids, in runs per owning triangle
+  std::vector<Aabb> boxes;  // of every slot of ids.items; swept over the step, not grown (the query adds its margin)
 };
 
 // What updateSweptMesh derives for findCandidatePairs and findSelfCandidatePairs: from the topology
-// when the BVH is built, and the feature boxes every step.
+// when the BVH is built (or patched after a tear, patchSweptMesh), and the feature boxes every step.
 struct SweptFeatures {
   std::vector<std::array<int, 3>> triangles;  // the triangles the BVH and all below were built for
   OwnedFeatures vertices;
   OwnedFeatures edges;
   // Self-collision candidates between triangles that share a corner. Their boxes always overlap,
   // so a BVH would report these triangle pairs every step; listing their feature pairs once per
-  // topology is much cheaper than rediscovering them. Entries index the slots above:
-  std::vector<std::array<int, 2>> neighbourVertexFace;  // (slot in vertices, face)
-  std::vector<std::array<int, 2>> neighbourEdgeEdge;    // (slot in edges, slot in edges)
+  // topology is much cheaper than rediscovering them. Triangle i's runs hold the candidates of
+  // its pairs (i, j > i). Entries index the slots above:
+  TriangleRuns<std::array<int, 2>> neighbourVertexFace;  // (slot in vertices, face)
+  TriangleRuns<std::array<int, 2>> neighbourEdgeEdge;    // (slot in edges, slot in edges)
 };
 
 // The plane of a triangle that does not move over the step (a static obstacle's, or any triangle
@@ -59,9 +60,20 @@ struct SweptMesh {
 // Recomputes the triangle boxes (x0, x1, grown by `margin`), the feature boxes and the fixed
 // planes. Builds the BVH
 // and the topology-derived features if the mesh's triangles differ from those they were built for
-// (first use, or a tear or cut, even one that keeps the triangle count; a few milliseconds for an
-// 8k-triangle mesh), and refits the BVH otherwise.
+// (first use, a change nobody patched with patchSweptMesh, or one after which the patch policy
+// asked for a fresh build; about 2 ms for an 8k-triangle mesh), and refits the BVH otherwise.
 void updateSweptMesh(SweptMesh& swept, double margin);
+
+// After editCollisionMesh changed swept.mesh: patches what updateSweptMesh built from the topology
+// for the triangles the edit touched, so that the next updateSweptMesh only refits.
+//   - The BVH: each appended triangle joins the leaf of the lowest older triangle sharing a
+//     corner with it (the one it was split from, or a neighbour); the next refit fixes the boxes.
+//     The tree is rebuilt instead (at the next updateSweptMesh) once it has drifted too far from
+//     a fresh build (Bvh::needsRebuild), or when the runs below hold more stale slots than live.
+//   - The owned-feature runs of the changed and regrouped triangles.
+//   - The neighbour candidates of every triangle around a corner (old or new) of those.
+// Does nothing when nothing was built yet (updateSweptMesh then builds from scratch).
+void patchSweptMesh(SweptMesh& swept, const CollisionMeshChange& change);
 
 struct VertexFacePair {
   int vertex;  // vertex of the first mesh of the pair list

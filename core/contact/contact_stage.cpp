@@ -1,19 +1,10 @@
 #include "contact/contact_stage.h"
 
+#include "contact/cloth_collision_mesh.h"
 #include "contact/obstacle.h"
 #include "sim/cloth.h"
 
 namespace weft {
-namespace {
-
-CollisionMesh clothCollisionMesh(const ClothMesh& mesh) {
-  std::vector<std::array<int, 3>> triangles;
-  triangles.reserve(mesh.tris.size());
-  for (const Triangle& t : mesh.tris) triangles.push_back(t.v);
-  return makeCollisionMesh(mesh.vertexCount(), triangles);
-}
-
-}  // namespace
 
 ContactStage::ContactStage(const Scene& scene) : spec_(scene.contact), ground_(scene.ground) {
   const int clothCount = static_cast<int>(scene.cloths.size());
@@ -54,10 +45,10 @@ void ContactStage::refreshBodies(std::vector<Cloth>& cloths, const std::vector<s
   for (std::size_t c = 0; c < cloths.size(); ++c) {
     ClothMesh& mesh = cloths[c].mesh;
     CollisionMesh& topology = clothTopology_[c];
-    // A tear or a cut adds vertices and triangles: the collision topology follows.
+    // First use, or a change nobody reported (clothTopologyChanged keeps the counts in step).
     if (topology.vertexCount != mesh.vertexCount() ||
         topology.triangles.size() != static_cast<std::size_t>(mesh.triangleCount())) {
-      topology = clothCollisionMesh(mesh);
+      topology = makeClothCollisionMesh(mesh);
     }
     std::vector<double>& inverseMass = clothInverseMass_[c];
     inverseMass.resize(static_cast<std::size_t>(mesh.vertexCount()));
@@ -90,6 +81,14 @@ void ContactStage::refreshBodies(std::vector<Cloth>& cloths, const std::vector<s
     body.swept.x0 = body.x0;
     body.swept.x1 = body.x1;
   }
+}
+
+void ContactStage::clothTopologyChanged(int cloth, const ClothMesh& mesh, const TopologyChange& change) {
+  CollisionMesh& topology = clothTopology_[cloth];
+  if (topology.triangles.empty()) return;  // not built yet: refreshBodies builds it
+  const CollisionMeshChange edit = updateClothCollisionMesh(topology, mesh, change);
+  SweptMesh& swept = bodies_[cloth].swept;
+  if (swept.mesh == &topology) patchSweptMesh(swept, edit);
 }
 
 void ContactStage::resolve(std::vector<Cloth>& cloths, const std::vector<std::vector<Vec3>>& startPositions,

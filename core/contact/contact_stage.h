@@ -13,6 +13,8 @@
 #include "contact/contact_pairs.h"
 #include "contact/contact_passes.h"
 #include "contact/held_contacts.h"
+#include "mesh/cloth_mesh.h"
+#include "mesh/topology_change.h"
 #include "scene/scene.h"
 #include "sim/stage_profile.h"
 
@@ -58,6 +60,11 @@ class ContactStage {
                std::vector<Obstacle>& obstacles, double h, StageProfile& profile);
   std::vector<HeldVertex>* heldVertices(int cloth);
   void applyHeldReactions(const std::vector<Cloth>& cloths, std::vector<Obstacle>& obstacles, double h);
+
+  // After a tear of cloth `cloth` (`change` already made to `mesh`): edits its collision topology
+  // and patches its broad-phase structures locally (cloth_collision_mesh.h, patchSweptMesh).
+  // A change it is not told about is still caught by the next step, which then rebuilds them.
+  void clothTopologyChanged(int cloth, const ClothMesh& mesh, const TopologyChange& change);
 
   const ContactStats& stats() const { return stats_; }
   // Sharp-tool contacts of the latest step (cutting reads these).

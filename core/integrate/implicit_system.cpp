@@ -12,6 +12,12 @@ void ImplicitSystem::ensurePattern(const Cloth& cloth) {
   patternStale = false;
 }
 
+void ImplicitSystem::topologyChanged(const Cloth& cloth, const TopologyChange& change) {
+  if (patternStale || !matrix.hasPattern()) return;  // ensurePattern builds it at the next step
+  const CoupledVertexPairs pairs = coupledVertexPairs(cloth, change);
+  matrix.growPattern(cloth.mesh.vertexCount(), pairs.edges, pairs.hingeWings);
+}
+
 void ImplicitSystem::beginStep(const Cloth& cloth, const StepInputs& inputs, StageProfile& profile) {
   ensurePattern(cloth);
   externalForces(cloth, inputs, externalForce, profile);

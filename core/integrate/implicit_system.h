@@ -29,6 +29,9 @@ struct ImplicitSystem {
 
   // Rebuilds the matrix pattern when the topology changed (or on first use).
   void ensurePattern(const Cloth& cloth);
+  // After a tear: grows the pattern by the pairs `change` couples (or leaves it to ensurePattern
+  // when there is none yet).
+  void topologyChanged(const Cloth& cloth, const TopologyChange& change);
   // What every implicit step starts with: the pattern in step with the topology, the external
   // forces and the pins' targets at the end of the step.
   void beginStep(const Cloth& cloth, const StepInputs& inputs, StageProfile& profile);

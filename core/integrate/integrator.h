@@ -9,6 +9,7 @@
 #include <memory>
 #include <vector>
 
+#include "mesh/topology_change.h"
 #include "scene/scene.h"
 #include "sim/stage_profile.h"
 
@@ -53,8 +54,15 @@ class Integrator {
  public:
   virtual ~Integrator() = default;
   virtual void advance(Cloth& cloth, const StepInputs& inputs, StageProfile& profile, SolverStats& stats) = 0;
-  // Called after a topology change: the next step rebuilds the matrix pattern.
+  // Called after a topology change nobody described: the next step rebuilds the matrix pattern.
   virtual void topologyChanged() {}
+  // Called after a local topology change (a tear) of `cloth`, described by `change`: the matrix
+  // pattern grows by what the change couples (SystemMatrix::growPattern) instead of being rebuilt.
+  virtual void topologyChanged(const Cloth& cloth, const TopologyChange& change) {
+    (void)cloth;
+    (void)change;
+    topologyChanged();
+  }
 };
 
 std::unique_ptr<Integrator> makeIntegrator(const SolverSpec& spec);

@@ -10,6 +10,9 @@ class LinearizedBackwardEuler final : public Integrator {
   explicit LinearizedBackwardEuler(const SolverSpec& spec) : system_(spec) {}
   void advance(Cloth& cloth, const StepInputs& inputs, StageProfile& profile, SolverStats& stats) override;
   void topologyChanged() override { system_.patternStale = true; }
+  void topologyChanged(const Cloth& cloth, const TopologyChange& change) override {
+    system_.topologyChanged(cloth, change);
+  }
 
  private:
   // The impulse each held vertex (integrator.h) received from its obstacle in the solve.

@@ -15,6 +15,9 @@ class NewtonIntegrator final : public Integrator {
       : system_(spec), maxIterations_(spec.newtonMaxIterations), tolerance_(spec.newtonTolerance) {}
   void advance(Cloth& cloth, const StepInputs& inputs, StageProfile& profile, SolverStats& stats) override;
   void topologyChanged() override { system_.patternStale = true; }
+  void topologyChanged(const Cloth& cloth, const TopologyChange& change) override {
+    system_.topologyChanged(cloth, change);
+  }
 
  private:
   double potential(const Cloth& cloth, const std::vector<Vec3>& x, const StepInputs& in, StageProfile& profile);

@@ -50,6 +50,84 @@ void SystemMatrix::setPattern(int vertexCount, const std::vector<std::pair<int, 
   ++patternVersion_;
 }
 
+bool SystemMatrix::hasBlock(int i, int j) const {
+  if (i >= vertexCount_ || j >= vertexCount_) return false;
+  const int col = 3 * j;
+  const int* rows = matrix_.innerIndexPtr();
+  const int* begin = rows + matrix_.outerIndexPtr()[col];
+  const int* end = rows + matrix_.outerIndexPtr()[col + 1];
+  const int* found = std::lower_bound(begin, end, 3 * i);
+  return found != end && *found == 3 * i;
+}
+
+void SystemMatrix::growPattern(int vertexCount, const std::vector<std::pair<int, int>>& coupledPairs,
+                               const std::vector<std::pair<int, int>>& weaklyCoupledPairs) {
+  assert(vertexCount >= vertexCount_ && "vertices are never removed");
+  // The new blocks, as (block column, block row).
+  std::vector<std::pair<int, int>> blocks;
+  for (int i = vertexCount_; i < vertexCount; ++i) blocks.emplace_back(i, i);
+  const std::vector<std::pair<int, int>> strong = orderedUniquePairs(coupledPairs);
+  for (const auto& pair : strong) {
+    const auto weak = std::lower_bound(weakPairs_.begin(), weakPairs_.end(), pair);
+    if (weak != weakPairs_.end() && *weak == pair) weakPairs_.erase(weak);  // now strong too
+    if (hasBlock(pair.first, pair.second)) continue;
+    blocks.emplace_back(pair.first, pair.second);
+    blocks.emplace_back(pair.second, pair.first);
+  }
+  for (const auto& pair : orderedUniquePairs(weaklyCoupledPairs)) {
+    if (hasBlock(pair.first, pair.second) || std::binary_search(strong.begin(), strong.end(), pair)) continue;
+    weakPairs_.insert(std::lower_bound(weakPairs_.begin(), weakPairs_.end(), pair), pair);
+    blocks.emplace_back(pair.first, pair.second);
+    blocks.emplace_back(pair.second, pair.first);
+  }
+  std::sort(blocks.begin(), blocks.end());
+  blocks.erase(std::unique(blocks.begin(), blocks.end()), blocks.end());
+
+  // Merge, column by column, the old rows with the new blocks' rows (both ascending).
+  const int size = 3 * vertexCount;
+  const int oldSize = 3 * vertexCount_;
+  const int* oldOuter = matrix_.outerIndexPtr();
+  const int* oldRows = matrix_.innerIndexPtr();
+  const double* oldValues = matrix_.valuePtr();
+  Sparse grown(size, size);
+  grown.resizeNonZeros(static_cast<Eigen::Index>(matrix_.nonZeros() + 9 * blocks.size()));
+  int* outer = grown.outerIndexPtr();
+  int* rows = grown.innerIndexPtr();
+  double* values = grown.valuePtr();
+  int written = 0;
+  auto next = blocks.begin();
+  for (int blockColumn = 0; blockColumn < vertexCount; ++blockColumn) {
+    const auto first = next;
+    while (next != blocks.end() && next->first == blockColumn) ++next;
+    for (int c = 0; c < 3; ++c) {
+      const int col = 3 * blockColumn + c;
+      outer[col] = written;
+      int k = col < oldSize ? oldOuter[col] : 0;
+      const int end = col < oldSize ? oldOuter[col + 1] : 0;
+      for (auto block = first; block != next; ++block) {
+        const int row = 3 * block->second;
+        for (; k < end && oldRows[k] < row; ++k, ++written) {
+          rows[written] = oldRows[k];
+          values[written] = oldValues[k];
+        }
+        for (int r = 0; r < 3; ++r, ++written) {
+          rows[written] = row + r;
+          values[written] = 0.0;
+        }
+      }
+      for (; k < end; ++k, ++written) {
+        rows[written] = oldRows[k];
+        values[written] = oldValues[k];
+      }
+    }
+  }
+  outer[size] = written;
+  assert(written == grown.nonZeros());
+  matrix_.swap(grown);
+  vertexCount_ = vertexCount;
+  ++patternVersion_;
+}
+
 void SystemMatrix::setZero() { std::fill_n(matrix_.valuePtr(), matrix_.nonZeros(), 0.0); }
 
 int SystemMatrix::blockOffset(int i, int j, int column) const {

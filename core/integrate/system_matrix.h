@@ -21,7 +21,18 @@ class SystemMatrix {
   // (bending hinge wings, next to the membrane's edges): a preconditioner may drop them.
   void setPattern(int vertexCount, const std::vector<std::pair<int, int>>& coupledPairs,
                   const std::vector<std::pair<int, int>>& weaklyCoupledPairs = {});
+  // Grows the pattern after a local topology change (a tear) without rebuilding it: rows and
+  // columns for the new vertices (vertexCount may grow) and the blocks of the given pairs that
+  // are not in it yet, merged column by column into the compressed storage (one pass over it, no
+  // sort of the whole pattern; values kept). Pairs the change uncoupled stay in the pattern as
+  // explicit zeros, so the grown pattern contains, and may exceed, what setPattern would build;
+  // a pair stays strong once strong (weakPairs() may miss a pair demoted to a hinge wing). The
+  // version increases: a solver must redo its symbolic analysis of the new pattern.
+  void growPattern(int vertexCount, const std::vector<std::pair<int, int>>& coupledPairs,
+                   const std::vector<std::pair<int, int>>& weaklyCoupledPairs = {});
   bool hasPattern() const { return vertexCount_ > 0; }
+  // Block (i, j) is in the pattern.
+  bool hasBlock(int i, int j) const;
   int vertexCount() const { return vertexCount_; }
   // Increases every time the pattern changes (solvers redo their symbolic analysis then).
   int patternVersion() const { return patternVersion_; }

@@ -20,6 +20,13 @@ struct TopologyChange {
   std::vector<int> crackEnds;                    // far end of each opened edge, after separation: where the crack
                                                  // now ends (a tear usually continues from there)
   std::vector<int> massChangedVertices;          // vertices whose lumped mass or velocity changed (sorted)
+
+  bool empty() const { return changedTriangles.empty() && changedEdges.empty() && newVertices.empty(); }
 };
+
+// Adds `next`, a change made after `into`, to `into`: the result is what both did together to the
+// mesh before `into` (lists merged, sorted, without repeats; copies and crack ends in order). As
+// nothing is ever removed, a cache patched once with the sum equals one patched with each.
+void accumulateTopologyChange(TopologyChange& into, const TopologyChange& next);
 
 }  // namespace weft

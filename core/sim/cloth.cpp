@@ -131,6 +131,18 @@ CoupledVertexPairs coupledVertexPairs(const Cloth& cloth) {
   return pairs;
 }
 
+CoupledVertexPairs coupledVertexPairs(const Cloth& cloth, const TopologyChange& change) {
+  CoupledVertexPairs pairs;
+  const std::vector<int>& edges = change.changedEdges;  // sorted
+  for (int e : edges) pairs.edges.emplace_back(cloth.mesh.edges[e].v[0], cloth.mesh.edges[e].v[1]);
+  // Every hinge on a changed edge was remade (cloth_topology.h). One pass over the hinges: a few
+  // microseconds, and it needs no assumption on where they were put.
+  for (const BendingHinge& h : cloth.hinges) {
+    if (std::binary_search(edges.begin(), edges.end(), h.edge)) pairs.hingeWings.emplace_back(h.v[2], h.v[3]);
+  }
+  return pairs;
+}
+
 Cloth buildCloth(const ClothSpec& spec, const std::string& sceneFile, int clothIndex) {
   const std::string field = "/cloths/" + std::to_string(clothIndex);
   Cloth cloth;

@@ -7,6 +7,7 @@
 #include "forces/membrane.h"
 #include "material/material.h"
 #include "mesh/cloth_mesh.h"
+#include "mesh/topology_change.h"
 #include "scene/scene.h"
 #include "sim/stage_profile.h"
 
@@ -57,5 +58,9 @@ struct CoupledVertexPairs {
   std::vector<std::pair<int, int>> hingeWings;
 };
 CoupledVertexPairs coupledVertexPairs(const Cloth& cloth);
+// The pairs a topology change (already applied to the cloth and its hinges, cloth_topology.h) may
+// have coupled anew: the ends of its changed edges and the wings of their hinges. Pairs it
+// uncoupled are not listed (nothing is ever removed from a pattern).
+CoupledVertexPairs coupledVertexPairs(const Cloth& cloth, const TopologyChange& change);
 
 }  // namespace weft

@@ -11,7 +11,8 @@ namespace weft {
 //   - hinges: those on changed edges are dropped, and every changed edge that is interior gets a
 //     fresh one (appended), so that the set equals what rebuildElements would build;
 //   - pins: a copy of a pinned vertex joins every PinTrack of its original, at the same start.
-// The integrator's matrix pattern is not touched here: call Integrator::topologyChanged().
+// The integrator's matrix pattern and the contact stage's collision structures are not touched
+// here: the world passes the change to Integrator::topologyChanged and ContactStage::clothTopologyChanged.
 void applyTopologyChange(Cloth& cloth, const TopologyChange& change);
 
 }  // namespace weft

@@ -40,13 +40,15 @@ struct World::Impl {
   void saveStartPositions() {
     for (size_t c = 0; c < cloths.size(); ++c) startPositions[c] = cloths[c].mesh.x;
   }
-  // Tears what must tear; whatever depends on a torn cloth's topology is rebuilt at its next use
-  // (the contact stage notices the new counts itself).
+  // Tears what must tear, and has whatever depends on a torn cloth's topology patched with what
+  // changed (the matrix pattern, the collision topology and broad phase).
   void tear(double time) {
     if (!tearing->runs()) return;
-    const std::vector<char> changed = tearing->run(cloths, time, profile);
+    const std::vector<TopologyChange> changes = tearing->run(cloths, time, profile);
     for (size_t c = 0; c < cloths.size(); ++c) {
-      if (changed[c]) integrators[c]->topologyChanged();
+      if (changes[c].empty()) continue;
+      integrators[c]->topologyChanged(cloths[c], changes[c]);
+      contact->clothTopologyChanged(static_cast<int>(c), cloths[c].mesh, changes[c]);
     }
   }
   bool pinsRun() const {

@@ -34,12 +34,14 @@ bool raysConflict(const ClothMesh& mesh, const RayCut& a, const RayCut& b) {
 }
 
 // Sorts the lists and adds the edges of every changed triangle to changedEdges (their hinges
-// depend on the triangles).
+// depend on the triangles), and the new edges, as topology_change.h promises (an opened edge's
+// copy may belong to a triangle that kept its corners: only its edge id changed).
 void finish(const ClothMesh& mesh, TopologyChange& change) {
   sortUnique(change.changedTriangles);
   for (int t : change.changedTriangles) {
     for (int e : mesh.tris[t].edge) change.changedEdges.push_back(e);
   }
+  change.changedEdges.insert(change.changedEdges.end(), change.newEdges.begin(), change.newEdges.end());
   sortUnique(change.changedEdges);
   sortUnique(change.newEdges);
   sortUnique(change.tornEdges);

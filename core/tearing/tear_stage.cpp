@@ -56,8 +56,8 @@ TearStage::TearStage(const Scene& scene) : spec_(scene.tearing) {
   runs_ = scene.stages.tearing && anyTable;
 }
 
-std::vector<char> TearStage::run(std::vector<Cloth>& cloths, double time, StageProfile& profile) {
-  std::vector<char> changed(cloths.size(), 0);
+std::vector<TopologyChange> TearStage::run(std::vector<Cloth>& cloths, double time, StageProfile& profile) {
+  std::vector<TopologyChange> changed(cloths.size());
   if (!runs_) return changed;
   TearGuards guards;
   guards.minEdgeLength = spec_.minEdgeLength;
@@ -110,7 +110,7 @@ std::vector<char> TearStage::run(std::vector<Cloth>& cloths, double time, StageP
       applyTopologyChange(cloth, change);
       updateTriangleCorners(cloth.mesh, change.changedTriangles, corners);
       nudgeCopiesApart(cloth.mesh, change);
-      changed[c] = 1;
+      accumulateTopologyChange(changed[c], change);
       ++stats_.tears;
       log_.push_back(records[k]);
     }

@@ -2,10 +2,11 @@
 // The tearing stage of a step (thesis §3.5, after collision response): for each cloth with a tear
 // table, the tensile stress of its triangles at the end of the step, the best fracture line of
 // each vertex, the selection, and the mesh surgery, with every cache of the cloth updated locally.
-// The integrators and the contact stage are told by the world (they rebuild what depends on the
-// topology).
+// The integrators and the contact stage are told by the world, with what changed, and patch what
+// depends on the topology.
 #include <vector>
 
+#include "mesh/topology_change.h"
 #include "scene/scene.h"
 #include "sim/stage_profile.h"
 #include "tearing/tear_candidates.h"
@@ -42,8 +43,9 @@ class TearStage {
   explicit TearStage(const Scene& scene);
   // The scene has a cloth with a tear table and tearing is on.
   bool runs() const { return runs_; }
-  // Tears what must tear; returns, per cloth, whether its topology changed.
-  std::vector<char> run(std::vector<Cloth>& cloths, double time, StageProfile& profile);
+  // Tears what must tear; returns, per cloth, what all its tears of this step changed together
+  // (empty when it did not tear).
+  std::vector<TopologyChange> run(std::vector<Cloth>& cloths, double time, StageProfile& profile);
   const std::vector<TearRecord>& log() const { return log_; }
   const TearStats& stats() const { return stats_; }
 
