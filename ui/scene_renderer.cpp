@@ -77,6 +77,7 @@ vec3 ground(vec3 p) {
   vec2 w = fwidth(g);
   vec2 d = abs(fract(g - 0.5) - 0.5) / max(w, vec2(1e-6));
   float line = 1.0 - min(min(d.x, d.y), 1.0);
+  line *= 1.0 - smoothstep(0.2, 0.6, max(w.x, w.y));  // lines denser than pixels fade out
   return mix(vec3(0.80, 0.80, 0.78), vec3(0.66, 0.66, 0.64), line * 0.6);
 }
 
@@ -248,9 +249,9 @@ void SceneRenderer::draw(const RenderView& view, const OrbitCamera& camera, int 
   glPolygonOffset(1.0f, 2.0f);
 
   if (view.groundHeight) {
-    // A square around the camera's target, large enough to reach the horizon of the framing.
+    // A square around the camera's target reaching almost to the far plane (a near horizon).
     const double h = *view.groundHeight;
-    const double r = 6.0 * camera.distance;
+    const double r = 0.6 * camera.farPlane;
     const Vec3 c(camera.target.x(), h, camera.target.z());
     const Vec3 corners[4] = {c + Vec3(-r, 0, -r), c + Vec3(r, 0, -r), c + Vec3(r, 0, r), c + Vec3(-r, 0, r)};
     std::vector<SurfaceVertex> quad;
