@@ -138,7 +138,7 @@ OrbitCamera facingCamera(double distance) {
   return camera;
 }
 
-TEST_F(SceneRendererTest, TornEdgeIsDrawnRed) {
+TEST_F(SceneRendererTest, TornEdgeIsDrawnRedAndCutEdgeGreen) {
   ClothMesh mesh = flatSheet(9);
   RenderView view;
   view.cloths.push_back(ClothView{&mesh, 0.0, clothTint(0)});
@@ -168,6 +168,23 @@ TEST_F(SceneRendererTest, TornEdgeIsDrawnRed) {
   // The sheet spans 0.4 m at 1 m with a 40 degree field of view: about 87 px wide.
   EXPECT_GT(redPixels(after, mid - 3, mid + 3), 70);
   EXPECT_EQ(redPixels(after, 0, mid - 6) + redPixels(after, mid + 6, 159), 0) << "red away from the tear";
+
+  // A cut edge is green: the vertical middle line (x = 0), cut instead.
+  for (Edge& e : mesh.edges) {
+    e.torn = false;
+    if (std::abs(mesh.x[e.v[0]].x()) < 1e-9 && std::abs(mesh.x[e.v[1]].x()) < 1e-9) e.cut = true;
+  }
+  const Image cut = render(view, camera, 160, 160);
+  int green = 0, greenAway = 0;
+  for (int y = 0; y < cut.height; ++y) {
+    for (int x = 0; x < cut.width; ++x) {
+      const std::uint8_t* p = cut.at(x, y);
+      if (p[1] > 140 && p[0] < 60 && p[2] < 60) ++(std::abs(x - mid) <= 3 ? green : greenAway);
+    }
+  }
+  EXPECT_GT(green, 70);
+  EXPECT_EQ(greenAway, 0);
+  EXPECT_EQ(redPixels(cut, 0, 159), 0);
 }
 
 // Dominant stripe orientation (degrees in [0, 90)): the peak of a histogram of luminance
@@ -221,6 +238,8 @@ TEST_F(SceneRendererTest, WovenStripesFollowTheWeftAngle) {
   double turned = at30 - at0;
   if (turned < 0) turned += 90.0;
   if (turned > 75.0) turned -= 90.0;
+  RecordProperty("stripe_deg_weft0", std::to_string(at0));
+  RecordProperty("stripe_deg_weft30", std::to_string(at30));
   EXPECT_NEAR(turned, 30.0, 5.0) << "weft 0: " << at0 << " deg, weft 30: " << at30 << " deg";
   EXPECT_TRUE(at0 < 5.0 || at0 > 85.0) << "weft 0 stripes should be axis-aligned, got " << at0;
 }
