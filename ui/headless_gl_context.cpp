@@ -18,7 +18,8 @@ std::string eglErrorText(const char* what) {
 }  // namespace
 
 HeadlessGlContext::HeadlessGlContext() {
-  // eglGetPlatformDisplay is EGL 1.5; fall back to the EXT entry point on older loaders.
+  // eglGetPlatformDisplay is EGL 1.5 (glvnd on Debian 12 has it); plain eglGetDisplay would need
+  // EGL_PLATFORM=surfaceless in the environment.
   EGLDisplay display = eglGetPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
   if (display == EGL_NO_DISPLAY) throw GlContextError(eglErrorText("eglGetPlatformDisplay(surfaceless)"));
   EGLint major = 0, minor = 0;
