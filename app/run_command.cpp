@@ -1,4 +1,5 @@
-// `weft run SCENE`: simulate a scene headless and write metrics.json (and OBJ frames with --obj).
+// `weft run SCENE`: simulate a scene headless and write metrics.json (and OBJ frames with --obj,
+// PNG frames rendered through EGL with --png, an MP4 of them with --video).
 //
 // Order matters for what a failure leaves behind: everything that can be wrong with the input
 // (scene, presets, meshes, pins) is checked by loading the scene and building the World before
@@ -17,6 +18,8 @@
 #include "command.h"
 #include "contact/obstacle.h"
 #include "frame_obj_writer.h"
+#include "frame_png_writer.h"
+#include "headless_gl_context.h"
 #include "metrics_writer.h"
 #include "progress_bar.h"
 #include "scene/scene_json.h"
@@ -34,6 +37,10 @@ struct RunOptions {
   int threads = 1;                 // only used when --threads was given
   std::string out;                 // default: out/<scene name>
   bool obj = false;
+  bool png = false;
+  bool video = false;                // implies png
+  int every = 1;                     // render every N-th frame
+  std::string size = "960x720";      // PNG size, WxH pixels
   bool quiet = false;
   std::vector<std::string> overrides;
   CLI::Option* framesOption = nullptr;
@@ -100,6 +107,38 @@ int runScene(const RunOptions& options) {
 
   const fs::path outDir = options.out.empty() ? fs::path("out") / scene->name : fs::path(options.out);
   const fs::path framesDir = outDir / "frames";
+  const bool png = options.png || options.video;
+  int width = 0, height = 0;
+  if (png && !parseImageSize(options.size, width, height)) {
+    std::cerr << "weft: --size: '" << options.size << "' is not WxH with both between 16 and 8192\n";
+    return kExitBadInput;
+  }
+  // EGL starts before anything is written, so a machine that cannot render leaves no output.
+  std::unique_ptr<FramePngWriter> pngWriter;
+  if (png) {
+    try {
+      pngWriter = std::make_unique<FramePngWriter>(*world, width, height);
+    } catch (const ui::GlContextError& e) {
+      std::cerr << "weft: --png: cannot start headless OpenGL: " << e.what()
+                << " (needs Mesa's EGL: libegl-mesa0 and libgl1-mesa-dri)\n";
+      return kExitFailure;
+    } catch (const std::exception& e) {
+      std::cerr << "weft: --png: " << e.what() << "\n";
+      return kExitFailure;
+    }
+  }
+  const bool video = options.video && onPath("ffmpeg");
+  if (options.video && !video) {
+    std::cerr << "weft: --video: ffmpeg is not installed (not on PATH); writing the PNG frames only "
+                 "(apt-get install ffmpeg to get frames.mp4)\n";
+  }
+  int pngFrames = 0;
+  auto writeImages = [&](int frame) {
+    if (!pngWriter || frame % options.every != 0) return;
+    pngWriter->write(*world, framesDir, frame);
+    ++pngFrames;
+  };
+
   const int frames = scene->output.frames;
   const int stepsPerFrameCount = stepsPerFrame(*scene);
   const bool talk = !options.quiet;
@@ -120,6 +159,11 @@ int runScene(const RunOptions& options) {
       removeOldFrames(framesDir);
       writeFrames(*world, framesDir, 0);
     }
+    if (png) {
+      fs::create_directories(framesDir);
+      removeOldPngFrames(framesDir);
+      writeImages(0);
+    }
   } catch (const std::exception& e) {
     std::cerr << "weft: cannot write to " << outDir.string() << ": " << e.what() << "\n";
     return kExitFailure;
@@ -139,18 +183,40 @@ int runScene(const RunOptions& options) {
       if (finite) {
         framesDone = frame;
         if (options.obj) writeFrames(*world, framesDir, frame);
+        writeImages(frame);
       }
       progress.update(frame);
     }
     progress.finish();
 
     const fs::path metricsFile = outDir / "metrics.json";
-    writeFileAtomically(metricsFile, runMetrics(*world, wallSeconds).dump(2) + "\n");
+    nlohmann::ordered_json metrics = runMetrics(*world, wallSeconds);
+    if (pngWriter) {
+      metrics["render"] = {{"gl_renderer", pngWriter->glRenderer()},
+                           {"size", {pngWriter->width(), pngWriter->height()}},
+                           {"frames", pngFrames}};
+    }
+    writeFileAtomically(metricsFile, metrics.dump(2) + "\n");
+    const fs::path videoFile = outDir / "frames.mp4";
+    if (video) {
+      std::error_code ec;
+      fs::remove(videoFile, ec);
+      const double fps = scene->output.fps / options.every;
+      if (encodeVideo(framesDir, videoFile, fps) != 0) {
+        std::cerr << "weft: --video: ffmpeg failed; the PNG frames are in " << framesDir.string() << "\n";
+      } else if (talk) {
+        std::printf("wrote %s\n", videoFile.string().c_str());
+      }
+    }
 
     if (talk) {
       printStageShares(world->profile());
       std::printf("wrote %s\n", metricsFile.string().c_str());
       if (options.obj) std::printf("wrote %d frame(s) to %s\n", framesDone + 1, framesDir.string().c_str());
+      if (png) {
+        std::printf("wrote %d PNG image(s) of %dx%d to %s (%s)\n", pngFrames, width, height,
+                    framesDir.string().c_str(), pngWriter->glRenderer().c_str());
+      }
     }
   } catch (const std::exception& e) {
     progress.finish();
@@ -177,6 +243,12 @@ Command addRunCommand(CLI::App& app) {
           ->check(CLI::NonNegativeNumber);
   cli->add_option("--out", options->out, "Output folder (default: out/<scene name>)");
   cli->add_flag("--obj", options->obj, "Also write frames/frame_NNNN.obj for every frame (frame 0 = start)");
+  cli->add_flag("--png", options->png,
+                "Also render frames/frame_NNNN.png headless (OpenGL through EGL; no display needed)");
+  cli->add_option("--every", options->every, "With --png: render every N-th frame (default 1)")
+      ->check(CLI::PositiveNumber);
+  cli->add_option("--size", options->size, "With --png: image size WxH in pixels (default 960x720)");
+  cli->add_flag("--video", options->video, "--png, then encode DIR/frames.mp4 with ffmpeg when it is installed");
   cli->add_option("--set", options->overrides, "Override a scene value, e.g. --set solver.dt=0.005 (repeatable)")
       ->type_name("PATH=VALUE")
       ->allow_extra_args(false);

@@ -5,6 +5,7 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <algorithm>
 #include <fstream>
 #include <map>
 #include <random>
@@ -46,9 +47,12 @@ class WeftCli : public ::testing::Test {
 
   fs::path work() const { return root_ / "work"; }
 
-  Result weft(const std::string& arguments) const {
+  // `environment`: assignments put before the command, e.g. "PATH=/nonexistent". Pictures come from
+  // llvmpipe, as in the renderer's tests.
+  Result weft(const std::string& arguments, const std::string& environment = "") const {
     const fs::path log = root_ / "output.txt";
-    const std::string command = "cd '" + work().string() + "' && '" + std::string(WEFT_BINARY) + "' " + arguments +
+    const std::string command = "cd '" + work().string() + "' && GALLIUM_DRIVER=llvmpipe " + environment + " '" +
+                                std::string(WEFT_BINARY) + "' " + arguments +
                                 " > '" + log.string() + "' 2>&1";
     const int status = std::system(command.c_str());
     Result r;
@@ -275,3 +279,53 @@ TEST_F(WeftCli, AccuracyStudyReportsErrorsThatShrinkWithEachKnob) {
 }
 
 }  // namespace
+
+// --png renders through EGL; where EGL cannot start the tests below that need pictures skip.
+bool eglUnavailable(const Result& r) { return r.exitCode == 1 && r.output.find("cannot start headless OpenGL") != std::string::npos; }
+
+TEST_F(WeftCli, RunPngWritesEveryNthFrameAndARenderBlock) {
+  const Result r = weft("run " + quoted(kHangingSheet) + " " + kTiny + " --png --every 2 --size 64x48 --out result");
+  if (eglUnavailable(r)) GTEST_SKIP() << "headless OpenGL cannot start here: " << r.output;
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  const fs::path frames = work() / "result" / "frames";
+  std::vector<std::string> names;
+  for (const auto& entry : fs::directory_iterator(frames)) names.push_back(entry.path().filename().string());
+  std::sort(names.begin(), names.end());
+  EXPECT_EQ(names, (std::vector<std::string>{"frame_0000.png", "frame_0002.png", "frame_0004.png"}));
+  std::ifstream png(frames / "frame_0000.png", std::ios::binary);
+  char signature[8] = {};
+  png.read(signature, 8);
+  EXPECT_EQ(std::string(signature + 1, 3), "PNG");
+  const json m = readJson(work() / "result" / "metrics.json");
+  ASSERT_TRUE(m.contains("render")) << m.dump(2);
+  EXPECT_FALSE(m["render"]["gl_renderer"].get<std::string>().empty());
+  EXPECT_EQ(m["render"]["size"], json::array({64, 48}));
+  EXPECT_EQ(m["render"]["frames"], 3);
+  EXPECT_NE(r.output.find("PNG image(s)"), std::string::npos) << r.output;
+}
+
+TEST_F(WeftCli, PngWithoutEglFailsBeforeWritingAnything) {
+  // glvnd finds no EGL vendor library: EGL cannot start.
+  const Result r = weft("run " + quoted(kHangingSheet) + " " + kTiny + " --png --out result",
+                        "__EGL_VENDOR_LIBRARY_FILENAMES=/nonexistent/egl_vendor.json");
+  EXPECT_EQ(r.exitCode, 1) << r.output;
+  EXPECT_NE(r.output.find("cannot start headless OpenGL"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(work() / "result"));
+}
+
+TEST_F(WeftCli, VideoWithoutFfmpegSaysSoAndStillWritesFrames) {
+  const Result r = weft("run " + quoted(kHangingSheet) + " " + kTiny + " --video --every 5 --size 32x32 --out result",
+                        "PATH=/nonexistent");
+  if (eglUnavailable(r)) GTEST_SKIP() << "headless OpenGL cannot start here: " << r.output;
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_NE(r.output.find("ffmpeg is not installed"), std::string::npos) << r.output;
+  EXPECT_TRUE(fs::exists(work() / "result" / "frames" / "frame_0005.png"));
+  EXPECT_FALSE(fs::exists(work() / "result" / "frames.mp4"));
+}
+
+TEST_F(WeftCli, BadImageSizeIsBadInput) {
+  const Result r = weft("run " + quoted(kHangingSheet) + " " + kTiny + " --png --size 64by48 --out result");
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  EXPECT_NE(r.output.find("--size"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(work() / "result"));
+}
