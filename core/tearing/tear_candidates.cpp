@@ -14,9 +14,8 @@ namespace {
 
 constexpr double kRadToDeg = 180.0 / std::numbers::pi;
 
-// omega of one line, all of it evaluated.
-TearCandidate evaluateLine(const StressFan& fan, double angle, double zeta, const TearTable& table,
-                           double weftAngleRad) {
+// omega of the line at `angle` whose separation strength is `zeta`.
+TearCandidate evaluateLine(double angle, double zeta, const TearTable& table, double weftAngleRad) {
   TearCandidate line;
   line.angle = angle;
   line.separation = zeta;
@@ -33,7 +32,7 @@ void keepIfBetter(const StressFan& fan, double angle, const TearTable& table, do
                   TearCandidate& best) {
   const double zeta = separationStrength(fan, angle);
   if (zeta < best.ratio * weakest * (1.0 - 1e-12)) return;
-  const TearCandidate trial = evaluateLine(fan, angle, zeta, table, weftAngleRad);
+  const TearCandidate trial = evaluateLine(angle, zeta, table, weftAngleRad);
   if (trial.ratio > best.ratio) best = trial;
 }
 
@@ -71,8 +70,8 @@ TearCandidate bestDenseLine(const StressFan& fan, const TearTable& table, double
   for (int iteration = 0; iteration < 20; ++iteration) {
     const double a = hi - invPhi * (hi - lo), b = lo + invPhi * (hi - lo);
     counts.linesEvaluated += 2;
-    const TearCandidate left = evaluateLine(fan, a, separationStrength(fan, a), table, weftAngleRad);
-    const TearCandidate right = evaluateLine(fan, b, separationStrength(fan, b), table, weftAngleRad);
+    const TearCandidate left = evaluateLine(a, separationStrength(fan, a), table, weftAngleRad);
+    const TearCandidate right = evaluateLine(b, separationStrength(fan, b), table, weftAngleRad);
     if (left.ratio > best.ratio) best = left;
     if (right.ratio > best.ratio) best = right;
     if (left.ratio >= right.ratio) {
