@@ -1,9 +1,10 @@
 #include "frame_obj_writer.h"
 
-#include <utility>
-
 #include <cstdio>
+#include <utility>
 #include <vector>
+
+#include "frame_files.h"
 
 namespace weft::app {
 
@@ -74,15 +75,7 @@ std::filesystem::path obstacleObjPath(const std::filesystem::path& framesDir, in
 }
 
 void removeOldFrames(const std::filesystem::path& framesDir) {
-  std::error_code ec;
-  if (!std::filesystem::is_directory(framesDir, ec)) return;
-  std::vector<std::filesystem::path> old;
-  for (const auto& entry : std::filesystem::directory_iterator(framesDir, ec)) {
-    const std::string name = entry.path().filename().string();
-    const bool ours = name.rfind("frame_", 0) == 0 || name.rfind("obstacle_", 0) == 0;
-    if (ours && entry.path().extension() == ".obj") old.push_back(entry.path());
-  }
-  for (const auto& file : old) std::filesystem::remove(file, ec);
+  removeFrameFiles(framesDir, ".obj", {"frame_", "obstacle_"});
 }
 
 }  // namespace weft::app

@@ -7,6 +7,7 @@
 #include <sstream>
 #include <vector>
 
+#include "frame_files.h"
 #include "headless_gl_context.h"
 #include "offscreen_framebuffer.h"
 #include "png_writer.h"
@@ -46,16 +47,7 @@ std::filesystem::path framePngPath(const std::filesystem::path& framesDir, int f
   return framesDir / name;
 }
 
-void removeOldPngFrames(const std::filesystem::path& framesDir) {
-  std::error_code ec;
-  if (!std::filesystem::is_directory(framesDir, ec)) return;
-  std::vector<std::filesystem::path> old;
-  for (const auto& entry : std::filesystem::directory_iterator(framesDir, ec)) {
-    const std::string name = entry.path().filename().string();
-    if (name.rfind("frame_", 0) == 0 && entry.path().extension() == ".png") old.push_back(entry.path());
-  }
-  for (const auto& file : old) std::filesystem::remove(file, ec);
-}
+void removeOldPngFrames(const std::filesystem::path& framesDir) { removeFrameFiles(framesDir, ".png", {"frame_"}); }
 
 bool parseImageSize(const std::string& text, int& outWidth, int& outHeight) {
   int w = 0, h = 0;
