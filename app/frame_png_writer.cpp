@@ -26,9 +26,8 @@ struct FramePngWriter::Impl {
 
 FramePngWriter::FramePngWriter(const World& world, int width, int height)
     : impl_(std::make_unique<Impl>(width, height)), width_(width), height_(height) {
-  Vec3 lo, hi;
-  ui::actionBox(ui::renderViewOf(world), lo, hi);
-  impl_->camera = ui::frameBox(lo, hi, static_cast<double>(width) / height);
+  impl_->camera = ui::defaultCamera(ui::renderViewOf(world), world.scene().output.camera,
+                                    static_cast<double>(width) / height);
 }
 
 FramePngWriter::~FramePngWriter() = default;

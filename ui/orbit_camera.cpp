@@ -44,8 +44,10 @@ Eigen::Matrix4f OrbitCamera::projection(double aspect) const {
   return p.cast<float>();
 }
 
-OrbitCamera frameBox(const Vec3& boxMin, const Vec3& boxMax, double aspect) {
+OrbitCamera frameBox(const Vec3& boxMin, const Vec3& boxMax, double aspect, double yawDeg, double pitchDeg) {
   OrbitCamera camera;
+  camera.yawDeg = yawDeg;
+  camera.pitchDeg = pitchDeg;
   camera.target = 0.5 * (boxMin + boxMax);
   camera.distance = 1.0;
   // The camera's axes at the default yaw and pitch (they do not depend on the distance).

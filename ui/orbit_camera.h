@@ -22,8 +22,9 @@ struct OrbitCamera {
   Eigen::Matrix4f projection(double aspect) const;  // aspect = width / height
 };
 
-// A camera at the default yaw and pitch that keeps the whole box [boxMin, boxMax] in view
-// (every corner inside the view, with a small margin), for an image of the given aspect.
-OrbitCamera frameBox(const Vec3& boxMin, const Vec3& boxMax, double aspect);
+// A camera at the given yaw and pitch that keeps the whole box [boxMin, boxMax] in view (every
+// corner inside the view, with a small margin), for an image of the given aspect.
+OrbitCamera frameBox(const Vec3& boxMin, const Vec3& boxMax, double aspect, double yawDeg = 30.0,
+                     double pitchDeg = 20.0);
 
 }  // namespace weft::ui

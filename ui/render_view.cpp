@@ -23,9 +23,19 @@ RenderView renderViewOf(const World& world) {
   const Scene& scene = world.scene();
   for (int i = 0; i < world.clothCount(); ++i) {
     ClothView cloth;
+    const ClothSpec& spec = scene.cloths[static_cast<std::size_t>(i)];
     cloth.mesh = &world.cloth(i);
-    cloth.weftAngleRad = scene.cloths[static_cast<std::size_t>(i)].weftAngleDeg * 3.14159265358979323846 / 180.0;
-    cloth.tint = clothTint(i);
+    cloth.weftAngleRad = spec.weftAngleDeg * 3.14159265358979323846 / 180.0;
+    const ClothAppearance& look = spec.appearance;
+    cloth.tint = look.color ? std::array<float, 3>{static_cast<float>(look.color->x()), static_cast<float>(look.color->y()),
+                                                   static_cast<float>(look.color->z())}
+                            : clothTint(i);
+    cloth.pattern = look.pattern;
+    cloth.threadPitch = look.threadPitch;
+    cloth.threadsPerBand = look.threadsPerBand;
+    for (const PinGroup& pins : spec.pins) {
+      for (const PinKeyframe& key : pins.script) cloth.pinTravel.push_back(key.offset);
+    }
     view.cloths.push_back(cloth);
   }
   for (int i = 0; i < world.obstacleCount(); ++i) {
@@ -66,6 +76,11 @@ void actionBox(const RenderView& view, Vec3& outMin, Vec3& outMax) {
     const double fall = std::max(0.0, extent - (deepest - highest));
     lo = lo.cwiseMin(clo + fall * down);
     hi = hi.cwiseMax(chi + fall * down);
+    // Pins carry the cloth where their scripts go; the whole cloth follows, more or less.
+    for (const Vec3& travel : cloth.pinTravel) {
+      lo = lo.cwiseMin(clo + travel);
+      hi = hi.cwiseMax(chi + travel);
+    }
   }
   for (const ObstacleView& o : view.obstacles) {
     for (const Vec3& p : o.vertices) {
@@ -80,6 +95,21 @@ void actionBox(const RenderView& view, Vec3& outMin, Vec3& outMax) {
   if (view.groundHeight && lo.y() < *view.groundHeight) lo.y() = std::min(*view.groundHeight, hi.y());
   outMin = lo;
   outMax = hi;
+}
+
+}  // namespace weft::ui
+
+namespace weft::ui {
+
+OrbitCamera defaultCamera(const RenderView& view, const CameraSpec& spec, double aspect) {
+  Vec3 lo, hi;
+  if (spec.frame) {
+    lo = spec.frame->first;
+    hi = spec.frame->second;
+  } else {
+    actionBox(view, lo, hi);
+  }
+  return frameBox(lo, hi, aspect, spec.yawDeg, spec.pitchDeg);
 }
 
 }  // namespace weft::ui

@@ -7,6 +7,8 @@
 #include <vector>
 
 #include "mesh/cloth_mesh.h"
+#include "orbit_camera.h"
+#include "scene/scene.h"
 #include "util/types.h"
 
 namespace weft {
@@ -18,7 +20,11 @@ namespace weft::ui {
 struct ClothView {
   const ClothMesh* mesh = nullptr;      // not owned; must outlive the draw
   double weftAngleRad = 0.0;            // weft direction in material space, from material x
-  std::array<float, 3> tint{0.80f, 0.30f, 0.25f};  // linear RGB of the threads
+  std::array<float, 3> tint{0.80f, 0.30f, 0.25f};  // RGB of the dyed threads
+  WeavePattern pattern = WeavePattern::Gingham;
+  double threadPitch = 0.005;  // m: distance between neighbouring threads of the woven texture
+  int threadsPerBand = 8;      // gingham: threads of one colour before the check changes colour
+  std::vector<Vec3> pinTravel; // m: every offset a pin script moves pinned vertices by (for framing)
 };
 
 struct ObstacleView {
@@ -38,12 +44,16 @@ struct RenderView {
 // The world at its current time. The cloth views point into the world's meshes.
 RenderView renderViewOf(const World& world);
 
-// The tint of the i-th cloth of a scene (a fixed palette, cycled).
+// The tint of the i-th cloth of a scene that chooses no colour (a fixed palette, cycled).
 std::array<float, 3> clothTint(int index);
 
 // The box the default camera frames: cloths and obstacles, each cloth grown along gravity to as
-// far as it could hang below its highest point (a sheet pinned flat swings down by its own size),
-// but not below the ground.
+// far as it could hang below its highest point (a sheet pinned flat swings down by its own size)
+// and carried along by its pin scripts, but not below the ground.
 void actionBox(const RenderView& view, Vec3& outMin, Vec3& outMax);
+
+// The scene's camera for an image of the given aspect: its yaw and pitch, framing its box or,
+// when it sets none, the action box of `view` (normally the view at time 0).
+OrbitCamera defaultCamera(const RenderView& view, const CameraSpec& spec, double aspect);
 
 }  // namespace weft::ui

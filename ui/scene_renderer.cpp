@@ -40,6 +40,7 @@ uniform vec3 uLight;        // towards the light, normalized
 uniform float uPitch;       // thread pitch (m)
 uniform vec2 uWeft;         // weft direction in material space (cos, sin)
 uniform float uBand;        // threads per yarn-dyed colour band
+uniform int uPattern;       // 0 gingham, 1 plain
 out vec4 outColour;
 
 // Brightness across a thread: a rounded yarn, darker at its sides.
@@ -57,8 +58,9 @@ vec3 woven(vec2 rest) {
   // Yarn-dyed bands of threads (a gingham check): every uBand threads the colour changes, so the
   // weft and warp directions stay readable from far away where single threads are sub-pixel.
   vec3 light = mix(uTint, vec3(0.96, 0.94, 0.88), 0.75);
-  vec3 weftYarn = mod(floor(cell.y / uBand), 2.0) < 0.5 ? uTint : light;  // weft threads: one per v row
-  vec3 warpYarn = mod(floor(cell.x / uBand), 2.0) < 0.5 ? uTint : light;  // warp threads: one per u column
+  bool check = uPattern == 0;
+  vec3 weftYarn = !check || mod(floor(cell.y / uBand), 2.0) < 0.5 ? uTint : light;  // weft threads: one per v row
+  vec3 warpYarn = !check || mod(floor(cell.x / uBand), 2.0) < 0.5 ? uTint : light;  // warp threads: one per u column
   // Plain weave: weft over warp on one checker colour, under it on the other.
   bool weftOnTop = mod(cell.x + cell.y, 2.0) < 0.5;
   // The thread on top shows its round cross-section, and dips at the ends of its float.
@@ -241,8 +243,6 @@ void SceneRenderer::draw(const RenderView& view, const OrbitCamera& camera, int 
   gl.surface.use();
   glUniformMatrix4fv(gl.surface.uniform("uViewProjection"), 1, GL_FALSE, viewProjection.data());
   glUniform3f(gl.surface.uniform("uLight"), light.x(), light.y(), light.z());
-  glUniform1f(gl.surface.uniform("uPitch"), static_cast<float>(settings_.threadPitch));
-  glUniform1f(gl.surface.uniform("uBand"), static_cast<float>(settings_.threadsPerBand));
 
   // Surfaces are pushed back a little so that edges drawn on them win the depth test.
   glEnable(GL_POLYGON_OFFSET_FILL);
@@ -271,6 +271,9 @@ void SceneRenderer::draw(const RenderView& view, const OrbitCamera& camera, int 
   glUniform1i(gl.surface.uniform("uMode"), 0);
   for (const ClothView& cloth : view.cloths) {
     glUniform3f(gl.surface.uniform("uTint"), cloth.tint[0], cloth.tint[1], cloth.tint[2]);
+    glUniform1f(gl.surface.uniform("uPitch"), static_cast<float>(cloth.threadPitch));
+    glUniform1f(gl.surface.uniform("uBand"), static_cast<float>(cloth.threadsPerBand));
+    glUniform1i(gl.surface.uniform("uPattern"), cloth.pattern == WeavePattern::Plain ? 1 : 0);
     glUniform2f(gl.surface.uniform("uWeft"), static_cast<float>(std::cos(cloth.weftAngleRad)),
                 static_cast<float>(std::sin(cloth.weftAngleRad)));
     gl.drawSurface(clothVertices(*cloth.mesh));

@@ -12,8 +12,6 @@
 namespace weft::ui {
 
 struct RenderSettings {
-  double threadPitch = 0.005;   // m: distance between neighbouring threads of the woven texture
-  int threadsPerBand = 8;       // threads of one colour before the yarn-dyed check changes colour
   std::array<float, 3> background{0.93f, 0.94f, 0.96f};  // RGB of the empty image
   std::array<float, 3> lightDirection{0.35f, 0.8f, 0.5f}; // towards the light (world, normalized when used)
   float lineWidth = 2.0f;       // px: torn, cut and sharp edges

@@ -46,6 +46,20 @@ struct PinGroup {
   std::vector<PinKeyframe> script;   // empty: fixed; otherwise piecewise-linear offsets over time, held after the last key
 };
 
+// How a cloth looks in the renderer; the simulation never reads it. The woven texture's threads
+// follow the weft angle whatever the pattern.
+enum class WeavePattern {
+  Gingham,  // yarn-dyed check: bands of `threadsPerBand` coloured threads alternate with light ones
+  Plain,    // every thread in the cloth's colour
+};
+
+struct ClothAppearance {
+  std::optional<Vec3> color;     // RGB in [0, 1] of the dyed threads; unset: a palette colour by cloth index
+  WeavePattern pattern = WeavePattern::Gingham;
+  double threadPitch = 0.005;    // m between neighbouring threads
+  int threadsPerBand = 8;        // gingham: threads per colour band
+};
+
 struct ClothSpec {
   std::string name = "cloth";
   std::optional<GridSpec> grid;  // exactly one of grid and obj
@@ -55,6 +69,7 @@ struct ClothSpec {
   Material material;             // resolved material (preset or inline)
   double weftAngleDeg = 0.0;     // weft direction U in material space, degrees from material x
   std::vector<PinGroup> pins;
+  ClothAppearance appearance;
 };
 
 struct WindSpec {
@@ -103,9 +118,18 @@ struct StageSwitches {
   bool tearing = true;    // cloths whose material has a tear table tear
 };
 
+// How images of the scene are taken (`weft run --png`, the editor's first view). The camera orbits
+// the centre of the box it frames; unset fields fall back to the automatic framing.
+struct CameraSpec {
+  double yawDeg = 30.0;    // degrees about world +y; 0 looks along -z
+  double pitchDeg = 20.0;  // degrees above the horizontal (positive looks down)
+  std::optional<std::pair<Vec3, Vec3>> frame;  // world box (min, max, m) kept in view; unset: the action box
+};
+
 struct OutputSpec {
   int frames = 120;     // frames to simulate in `weft run`
   double fps = 30.0;    // frames per simulated second; steps per frame = round(1/(fps*dt))
+  CameraSpec camera;
 };
 
 struct Scene {

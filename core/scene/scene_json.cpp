@@ -214,9 +214,34 @@ ClothMesh buildMeshForChecks(const ClothSpec& cloth, const std::string& pointer,
   }
 }
 
+ClothAppearance parseAppearance(const json& j, const std::string& pointer, const SceneReadContext& ctx) {
+  const FieldReader r(j, pointer, ctx.file, {"color", "pattern", "thread_pitch_mm", "threads_per_band"});
+  ClothAppearance appearance;
+  if (r.has("color")) {
+    const auto rgb = r.numberRow<3>(r.at("color"), r.pointer("color"), "color (RGB in [0, 1])");
+    for (double c : rgb) {
+      if (c < 0.0 || c > 1.0) r.fail(r.pointer("color"), "color (RGB in [0, 1]) has a channel outside [0, 1], " + r.got(r.at("color")));
+    }
+    appearance.color = Vec3(rgb[0], rgb[1], rgb[2]);
+  }
+  if (r.has("pattern")) {
+    const std::string name = r.stringValue(r.at("pattern"), r.pointer("pattern"));
+    if (name == "gingham") {
+      appearance.pattern = WeavePattern::Gingham;
+    } else if (name == "plain") {
+      appearance.pattern = WeavePattern::Plain;
+    } else {
+      r.fail(r.pointer("pattern"), "unknown pattern \"" + name + "\"; expected gingham or plain");
+    }
+  }
+  appearance.threadPitch = 1e-3 * r.number("thread_pitch_mm", 1e3 * appearance.threadPitch, Bound::Positive, "thread pitch in mm");
+  appearance.threadsPerBand = r.integer("threads_per_band", appearance.threadsPerBand, 1);
+  return appearance;
+}
+
 ClothSpec parseCloth(const json& j, const std::string& pointer, std::size_t index, const SceneReadContext& ctx) {
   const FieldReader r(j, pointer, ctx.file,
-                      {"name", "mesh", "placement", "material", "tear_table", "weft_angle_deg", "pins"});
+                      {"name", "mesh", "placement", "material", "tear_table", "weft_angle_deg", "pins", "appearance"});
   ClothSpec cloth;
   cloth.name = r.string("name", index == 0 ? std::string("cloth") : "cloth" + std::to_string(index));
   requireSafeName(r, "name", cloth.name);
@@ -231,6 +256,7 @@ ClothSpec parseCloth(const json& j, const std::string& pointer, std::size_t inde
       cloth.pins.push_back(parsePinGroup(groups[g], childPointer(r.pointer("pins"), g), ctx));
     }
   }
+  if (r.has("appearance")) cloth.appearance = parseAppearance(r.at("appearance"), r.pointer("appearance"), ctx);
   checkPinsAgainstMesh(cloth, buildMeshForChecks(cloth, pointer, ctx), pointer, ctx);
   return cloth;
 }
@@ -315,11 +341,31 @@ StageSwitches parseStages(const json& j, const std::string& pointer, const Scene
   return stages;
 }
 
+CameraSpec parseCamera(const json& j, const std::string& pointer, const SceneReadContext& ctx) {
+  const FieldReader r(j, pointer, ctx.file, {"yaw_deg", "pitch_deg", "frame"});
+  CameraSpec camera;
+  camera.yawDeg = r.number("yaw_deg", camera.yawDeg, Bound::Finite);
+  camera.pitchDeg = r.number("pitch_deg", camera.pitchDeg, Bound::Finite);
+  if (camera.pitchDeg < -89.0 || camera.pitchDeg > 89.0) {
+    r.fail(r.pointer("pitch_deg"), "must lie in [-89, 89] degrees (the camera cannot look straight up or down), " +
+                                       r.got(r.at("pitch_deg")));
+  }
+  if (r.has("frame")) {
+    const FieldReader f(r.at("frame"), r.pointer("frame"), ctx.file, {"min", "max"});
+    const Vec3 lo = vec3Value(f, f.required("min", "the box's lowest corner [x, y, z] (m)"), f.pointer("min"));
+    const Vec3 hi = vec3Value(f, f.required("max", "the box's highest corner [x, y, z] (m)"), f.pointer("max"));
+    if ((hi - lo).minCoeff() < 0.0) f.fail(f.pointer("max"), "must be >= min in every coordinate");
+    camera.frame = std::make_pair(lo, hi);
+  }
+  return camera;
+}
+
 OutputSpec parseOutput(const json& j, const std::string& pointer, const SceneReadContext& ctx) {
-  const FieldReader r(j, pointer, ctx.file, {"frames", "fps"});
+  const FieldReader r(j, pointer, ctx.file, {"frames", "fps", "camera"});
   OutputSpec output;
   output.frames = r.integer("frames", output.frames, 0);
   output.fps = r.number("fps", output.fps, Bound::Positive);
+  if (r.has("camera")) output.camera = parseCamera(r.at("camera"), r.pointer("camera"), ctx);
   return output;
 }
 

@@ -211,6 +211,23 @@ TEST(SceneJson, InlineMaterialAndObjBesideTheScene) {
   EXPECT_TRUE(fs::equivalent(loaded.cloths[0].obj->path, dir.path() / "quad.obj"));
 }
 
+TEST(SceneJson, AppearanceIsReadWithItsUnits) {
+  TempDir dir;
+  json scene = minimalScene();
+  scene["cloths"][0]["appearance"] =
+      json::parse(R"({"color": [0.1, 0.2, 0.3], "pattern": "plain", "thread_pitch_mm": 2, "threads_per_band": 4})");
+  const Scene s = loadScene(dir.write("scene.json", scene.dump()));
+  const ClothAppearance& look = s.cloths[0].appearance;
+  ASSERT_TRUE(look.color.has_value());
+  EXPECT_EQ(*look.color, Vec3(0.1, 0.2, 0.3));
+  EXPECT_EQ(look.pattern, WeavePattern::Plain);
+  EXPECT_DOUBLE_EQ(look.threadPitch, 0.002);
+  EXPECT_EQ(look.threadsPerBand, 4);
+  const Scene plain = loadScene(dir.write("plain.json", minimalScene().dump()));
+  EXPECT_FALSE(plain.cloths[0].appearance.color.has_value());
+  EXPECT_EQ(plain.cloths[0].appearance.pattern, WeavePattern::Gingham);
+}
+
 TEST(SceneJson, StepsPerFrameRoundsAndNeverReturnsZero) {
   Scene scene;
   scene.output.fps = 30;
@@ -291,6 +308,12 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"ZeroFps", R"({"output": {"fps": 0}})", {}, "/output/fps", "positive"},
         BadCase{"GustOutOfRange", R"({"forces": {"wind": {"gust_amplitude": 2}}})", {},
                 "/forces/wind/gust_amplitude", "[0, 1]"},
+        BadCase{"ColourOutOfRange", cloth(R"("appearance": {"color": [0.2, 1.5, 0.1]})"), {},
+                "/cloths/0/appearance/color", "[0, 1]"},
+        BadCase{"UnknownPattern", cloth(R"("appearance": {"pattern": "tartan"})"), {}, "/cloths/0/appearance/pattern",
+                "gingham or plain"},
+        BadCase{"ZeroThreadPitch", cloth(R"("appearance": {"thread_pitch_mm": 0})"), {},
+                "/cloths/0/appearance/thread_pitch_mm", "positive"},
         BadCase{"GravityNotAVector", R"({"forces": {"gravity": [0, -9.81]}})", {}, "/forces/gravity", "3 finite"},
         BadCase{"StageNotBool", R"({"stages": {"wind": 1}})", {}, "/stages/wind", "true or false"},
         BadCase{"ResolutionTooSmall", R"({"cloths": [{"mesh": {"grid": {"resolution": [1, 8]}}, "material": "royal-target"}]})",

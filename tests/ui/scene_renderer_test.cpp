@@ -223,13 +223,13 @@ double stripeOrientationDeg(const Image& image, int x0, int y0, int x1, int y1) 
 
 TEST_F(SceneRendererTest, WovenStripesFollowTheWeftAngle) {
   const ClothMesh mesh = flatSheet(5);
-  RenderSettings settings;
-  settings.threadPitch = 0.02;  // coarse: about 9 px per thread in a 200 px image of the sheet
   const OrbitCamera camera = facingCamera(0.9);
   auto orientation = [&](double weftDeg) {
     RenderView view;
-    view.cloths.push_back(ClothView{&mesh, weftDeg * kPi / 180.0, clothTint(0)});
-    const Image image = render(view, camera, 256, 256, settings);
+    ClothView cloth{&mesh, weftDeg * kPi / 180.0, clothTint(0)};
+    cloth.threadPitch = 0.02;  // coarse: about 9 px per thread in a 200 px image of the sheet
+    view.cloths.push_back(cloth);
+    const Image image = render(view, camera, 256, 256);
     // A window well inside the sheet.
     return stripeOrientationDeg(image, 78, 78, 178, 178);
   };
