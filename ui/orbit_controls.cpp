@@ -6,6 +6,17 @@
 namespace weft::ui {
 namespace {
 constexpr double kPi = 3.14159265358979323846;
+
+// The camera's screen-right and screen-up directions in the world, built as OrbitCamera::view()
+// builds them but kept in double (view() is float, too coarse for small pans far away).
+void screenAxes(const OrbitCamera& camera, Vec3& outSide, Vec3& outUp) {
+  const Vec3 forward = (camera.target - camera.eye()).normalized();
+  Vec3 up(0, 1, 0);
+  if (std::abs(forward.dot(up)) > 0.999) up = Vec3(0, 0, -1);  // looking straight down or up
+  outSide = forward.cross(up).normalized();
+  outUp = outSide.cross(forward);
+}
+
 }  // namespace
 
 void orbitBy(OrbitCamera& camera, double dx, double dy, const OrbitControlSettings& settings) {
@@ -18,9 +29,8 @@ void orbitBy(OrbitCamera& camera, double dx, double dy, const OrbitControlSettin
 
 void panBy(OrbitCamera& camera, double dx, double dy, double viewportHeight) {
   if (viewportHeight <= 0.0) return;
-  const Eigen::Matrix4f view = camera.view();
-  const Vec3 side = view.block<1, 3>(0, 0).transpose().cast<double>();
-  const Vec3 up = view.block<1, 3>(1, 0).transpose().cast<double>();
+  Vec3 side, up;
+  screenAxes(camera, side, up);
   const double metresPerUnit = 2.0 * camera.distance * std::tan(camera.fovYDeg * kPi / 360.0) / viewportHeight;
   // The scene moves with the cursor, so the target moves against it (window y points down).
   camera.target += metresPerUnit * (-dx * side + dy * up);
