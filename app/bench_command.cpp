@@ -25,6 +25,7 @@
 #include "accuracy_study.h"
 #include "bench_stats.h"
 #include "command.h"
+#include "default_scene.h"
 #include "contact_bench.h"
 #include "tearing_bench.h"
 #include "machine_info.h"
@@ -214,16 +215,8 @@ std::string csvText(const std::vector<Result>& results, const BenchOptions& opti
   return csv.str();
 }
 
-fs::path defaultBenchScene() {
-  if (const char* data = std::getenv("WEFT_DATA_DIR"); data != nullptr && *data != '\0') {
-    const fs::path candidate = fs::path(data) / "presets" / "scenes" / "hanging-sheet.json";
-    if (fs::is_regular_file(candidate)) return candidate;
-  }
-  return fs::path(WEFT_SOURCE_DIR) / "presets" / "scenes" / "hanging-sheet.json";
-}
-
 int runBench(const BenchOptions& options) {
-  const fs::path sceneFile = options.scene.empty() ? defaultBenchScene() : fs::path(options.scene);
+  const fs::path sceneFile = options.scene.empty() ? defaultScenePath() : fs::path(options.scene);
 
   std::vector<Configuration> configs;
   for (int size : options.sizes) {

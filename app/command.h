@@ -25,7 +25,7 @@ Command addValidateCommand(CLI::App& app);
 Command addBenchCommand(CLI::App& app);
 Command addEditCommand(CLI::App& app);
 
-// What `weft` and `weft edit` do until the editor exists.
-int editorNotBuilt();
+// `weft` with no subcommand: `weft edit` on the default scene.
+int editDefaultScene();
 
 }  // namespace weft::app

@@ -29,8 +29,8 @@ int main(int argc, char** argv) {
     for (const auto& command : commands) {
       if (command.cli->parsed()) return command.run();
     }
-    // No subcommand: the editor is the default once it exists.
-    return editorNotBuilt();
+    // No subcommand: `weft edit` on the default scene.
+    return editDefaultScene();
   } catch (const std::exception& e) {
     std::cerr << "weft: internal error: " << e.what() << "\n";
     return kExitFailure;

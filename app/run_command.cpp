@@ -16,6 +16,7 @@
 
 #include "util/atomic_file.h"
 #include "command.h"
+#include "run_command.h"
 #include "contact/obstacle.h"
 #include "frame_obj_writer.h"
 #include "frame_png_writer.h"
@@ -23,6 +24,7 @@
 #include "metrics_writer.h"
 #include "progress_bar.h"
 #include "scene/scene_json.h"
+#include "sim/finite_state.h"
 #include "sim/world.h"
 #include "util/input_error.h"
 
@@ -30,34 +32,6 @@ namespace weft::app {
 namespace {
 
 namespace fs = std::filesystem;
-
-struct RunOptions {
-  std::string scene;
-  int frames = 0;                  // only used when --frames was given
-  int threads = 1;                 // only used when --threads was given
-  std::string out;                 // default: out/<scene name>
-  bool obj = false;
-  bool png = false;
-  bool video = false;                // implies png
-  int every = 1;                     // render every N-th frame
-  std::string size = "960x720";      // PNG size, WxH pixels
-  bool quiet = false;
-  std::vector<std::string> overrides;
-  CLI::Option* framesOption = nullptr;
-  CLI::Option* threadsOption = nullptr;
-};
-
-// The NaN check is done on the state itself after every frame rather than through
-// World::metrics(), which also evaluates energies and would cost a force evaluation per frame.
-bool stateIsFinite(const World& world) {
-  for (int i = 0; i < world.clothCount(); ++i) {
-    const ClothMesh& mesh = world.cloth(i);
-    for (std::size_t k = 0; k < mesh.x.size(); ++k) {
-      if (!mesh.x[k].allFinite() || !mesh.v[k].allFinite()) return false;
-    }
-  }
-  return true;
-}
 
 void writeFrames(const World& world, const fs::path& framesDir, int frame) {
   const bool several = world.clothCount() > 1;
@@ -88,12 +62,14 @@ void printStageShares(const StageProfile& profile) {
   }
 }
 
+}  // namespace
+
 int runScene(const RunOptions& options) {
   // --frames and --threads are shorthands for overrides, applied after the user's --set so that
   // the explicit flag wins.
   std::vector<std::string> overrides = options.overrides;
-  if (options.framesOption->count() > 0) overrides.push_back("output.frames=" + std::to_string(options.frames));
-  if (options.threadsOption->count() > 0) overrides.push_back("solver.threads=" + std::to_string(options.threads));
+  if (options.frames) overrides.push_back("output.frames=" + std::to_string(*options.frames));
+  if (options.threads) overrides.push_back("solver.threads=" + std::to_string(*options.threads));
 
   std::optional<Scene> scene;
   std::unique_ptr<World> world;
@@ -232,31 +208,44 @@ int runScene(const RunOptions& options) {
   return kExitOk;
 }
 
-}  // namespace
-
 Command addRunCommand(CLI::App& app) {
-  auto options = std::make_shared<RunOptions>();
+  // --frames and --threads are optional in RunOptions; CLI11 2.1 fills plain ints, so they are
+  // parsed here and handed over only when given.
+  struct Parsed {
+    RunOptions options;
+    int frames = 0;
+    int threads = 1;
+    CLI::Option* framesOption = nullptr;
+    CLI::Option* threadsOption = nullptr;
+  };
+  auto parsed = std::make_shared<Parsed>();
+  RunOptions& options = parsed->options;
   CLI::App* cli = app.add_subcommand("run", "Simulate a scene headless; write metrics.json (and OBJ frames)");
-  cli->add_option("scene", options->scene, "Scene file (JSON), e.g. presets/scenes/hanging-sheet.json")->required();
-  options->framesOption =
-      cli->add_option("--frames", options->frames, "Frames to simulate (same as --set output.frames=N)")
+  cli->add_option("scene", options.scene, "Scene file (JSON), e.g. presets/scenes/hanging-sheet.json")->required();
+  parsed->framesOption =
+      cli->add_option("--frames", parsed->frames, "Frames to simulate (same as --set output.frames=N)")
           ->check(CLI::NonNegativeNumber);
-  cli->add_option("--out", options->out, "Output folder (default: out/<scene name>)");
-  cli->add_flag("--obj", options->obj, "Also write frames/frame_NNNN.obj for every frame (frame 0 = start)");
-  cli->add_flag("--png", options->png,
+  cli->add_option("--out", options.out, "Output folder (default: out/<scene name>)");
+  cli->add_flag("--obj", options.obj, "Also write frames/frame_NNNN.obj for every frame (frame 0 = start)");
+  cli->add_flag("--png", options.png,
                 "Also render frames/frame_NNNN.png headless (OpenGL through EGL; no display needed)");
-  cli->add_option("--every", options->every, "With --png: render every N-th frame (default 1)")
+  cli->add_option("--every", options.every, "With --png: render every N-th frame (default 1)")
       ->check(CLI::PositiveNumber);
-  cli->add_option("--size", options->size, "With --png: image size WxH in pixels (default 960x720)");
-  cli->add_flag("--video", options->video, "--png, then encode DIR/frames.mp4 with ffmpeg when it is installed");
-  cli->add_option("--set", options->overrides, "Override a scene value, e.g. --set solver.dt=0.005 (repeatable)")
+  cli->add_option("--size", options.size, "With --png: image size WxH in pixels (default 960x720)");
+  cli->add_flag("--video", options.video, "--png, then encode DIR/frames.mp4 with ffmpeg when it is installed");
+  cli->add_option("--set", options.overrides, "Override a scene value, e.g. --set solver.dt=0.005 (repeatable)")
       ->type_name("PATH=VALUE")
       ->allow_extra_args(false);
-  options->threadsOption =
-      cli->add_option("--threads", options->threads, "Worker threads (same as --set solver.threads=N)")
+  parsed->threadsOption =
+      cli->add_option("--threads", parsed->threads, "Worker threads (same as --set solver.threads=N)")
           ->check(CLI::PositiveNumber);
-  cli->add_flag("--quiet,-q", options->quiet, "Print nothing but errors");
-  return {cli, [options] { return runScene(*options); }};
+  cli->add_flag("--quiet,-q", options.quiet, "Print nothing but errors");
+  return {cli, [parsed] {
+            RunOptions given = parsed->options;
+            if (parsed->framesOption->count() > 0) given.frames = parsed->frames;
+            if (parsed->threadsOption->count() > 0) given.threads = parsed->threads;
+            return runScene(given);
+          }};
 }
 
 }  // namespace weft::app

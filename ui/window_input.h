@@ -1,0 +1,32 @@
+#pragma once
+// What the user did with the mouse and keyboard since the last poll, as plain data: the window
+// (glfw_window) fills it, the camera controls and the viewer read it. No GLFW types, so the
+// controls can be tested without a window.
+#include <vector>
+
+namespace weft::ui {
+
+// The keys the viewer reacts to; other keys are not reported.
+enum class Key { kSpace, kN, kR, kEscape };
+
+struct MouseState {
+  double x = 0.0, y = 0.0;  // cursor in window coordinates: pixels from the top-left corner
+  bool left = false;        // buttons held down
+  bool right = false;
+  bool middle = false;
+  double scrollY = 0.0;     // wheel clicks since the last poll; positive turns away from the user
+};
+
+struct WindowInput {
+  MouseState mouse;
+  std::vector<Key> keysPressed;  // in order, since the last poll (key repeat included)
+
+  bool pressed(Key key) const {
+    for (Key k : keysPressed) {
+      if (k == key) return true;
+    }
+    return false;
+  }
+};
+
+}  // namespace weft::ui
