@@ -18,12 +18,10 @@ namespace {
 
 std::string titleOf(const ui::LiveSimulation& simulation) { return "Weft: " + simulation.status(); }
 
-// Frames the world as it is now (its start), as headless runs do.
-ui::OrbitCamera defaultCamera(const World& world, ui::PixelSize size) {
-  Vec3 lo, hi;
-  ui::actionBox(ui::renderViewOf(world), lo, hi);
+// The scene's camera, framing the world as it is now (its start), as headless runs do.
+ui::OrbitCamera startCamera(const World& world, ui::PixelSize size) {
   const double aspect = size.height > 0 ? static_cast<double>(size.width) / size.height : 1.0;
-  return ui::frameBox(lo, hi, aspect);
+  return ui::defaultCamera(ui::renderViewOf(world), world.scene().output.camera, aspect);
 }
 
 void reportStop(const ui::LiveSimulation& simulation) {
@@ -62,7 +60,7 @@ int runLiveViewer(ui::LiveSimulation& simulation, const LiveViewerOptions& optio
   settings.title = titleOf(simulation);
   ui::GlfwWindow window(settings);
   ui::SceneRenderer renderer;
-  ui::OrbitCamera camera = defaultCamera(simulation.world(), window.framebufferSize());
+  ui::OrbitCamera camera = startCamera(simulation.world(), window.framebufferSize());
   ui::OrbitControls controls;
   std::printf("weft edit: %s (%s)\n  Space pause/resume, N step when paused, R reload, Esc quit; "
               "left drag orbits, right or middle drag pans, the wheel zooms\n",
