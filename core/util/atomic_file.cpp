@@ -9,6 +9,11 @@
 namespace weft {
 
 void writeFileAtomically(const std::filesystem::path& file, const std::string& contents) {
+  writeFileAtomically(file, contents, [] {});
+}
+
+void writeFileAtomically(const std::filesystem::path& file, const std::string& contents,
+                         const std::function<void()>& beforeRename) {
   std::filesystem::path temporary = file;
   temporary += ".tmp";
   {
@@ -21,6 +26,13 @@ void writeFileAtomically(const std::filesystem::path& file, const std::string& c
       std::filesystem::remove(temporary, ignored);
       throw std::runtime_error("cannot write " + temporary.string() + ": " + std::strerror(errno));
     }
+  }
+  try {
+    if (beforeRename) beforeRename();
+  } catch (...) {
+    std::error_code ignored;
+    std::filesystem::remove(temporary, ignored);
+    throw;
   }
   // rename() replaces the destination in one step on POSIX file systems.
   std::error_code ec;

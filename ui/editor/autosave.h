@@ -1,0 +1,63 @@
+#pragma once
+// Unsaved edits survive a crash: the editor writes each dirty document to an autosave folder every few
+// seconds, and at the next open of that file offers what it finds there. One autosave file per
+// original, named from the original's absolute path (its stem and a hash of the path) so two scenes
+// with the same name in different folders never share one; an untitled document uses "untitled".
+//
+// An autosave file is a JSON object: {"weftAutosave": 1, "original": absolute path or "",
+// "savedAt": UTC time "2024-05-01T12:00:00Z", "document": the JSON being edited}.
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "editor/json_document.h"
+
+namespace weft::editor {
+
+struct Recovery {
+  std::filesystem::path original;      // the file the work belongs to; empty for an untitled document
+  std::filesystem::path autosaveFile;  // where it was found (pass `original` to discard() to remove it)
+  nlohmann::json document;             // the unsaved work
+  std::string savedAt;                 // UTC, ISO 8601: "2024-05-01T12:00:00Z"
+};
+
+class Autosave {
+ public:
+  // $WEFT_AUTOSAVE_DIR if set, else $XDG_STATE_HOME/weft/autosave, else
+  // $HOME/.local/state/weft/autosave, else (no HOME) the system's temporary folder/weft-autosave.
+  // Empty variables count as unset.
+  static std::filesystem::path defaultDirectory();
+
+  explicit Autosave(std::filesystem::path dir);  // created on the first write
+
+  const std::filesystem::path& directory() const;
+
+  // Writes the document atomically when it is dirty. When it is clean the file on disk already holds
+  // the work, so any earlier autosave of it is removed instead (edits undone back to the saved state
+  // are not offered again). Throws std::runtime_error naming the file when the write fails.
+  void write(const JsonDocument& doc);
+
+  // The autosave of `original` (empty: the untitled one) when its document differs from the file on
+  // disk (a missing or unreadable file counts as different). A corrupt or foreign autosave file is
+  // ignored: nullopt, never an exception.
+  std::optional<Recovery> find(const std::filesystem::path& original) const;
+
+  // Every autosave in the folder that find() would offer, oldest first: what was open when the
+  // editor last crashed.
+  std::vector<Recovery> all() const;
+
+  // After a save, or when the user declines recovery. Nothing happens when there is none.
+  void discard(const std::filesystem::path& original);
+
+  // Where the autosave of `original` lives: "<stem>-<16 hex digits of FNV-1a of the absolute
+  // path>.autosave.json", or "untitled.autosave.json".
+  std::filesystem::path fileFor(const std::filesystem::path& original) const;
+
+ private:
+  std::filesystem::path dir_;
+};
+
+}  // namespace weft::editor
