@@ -40,6 +40,12 @@ ContactStage::ContactStage(const Scene& scene) : spec_(scene.contact), ground_(s
   for (int o = 0; o < obstacleCount; ++o) bodyToWorldIndex_.push_back(o);
 }
 
+void ContactStage::reconfigure(const Scene& scene) {
+  const ContactStats kept = stats_;
+  *this = ContactStage(scene);
+  stats_ = kept;
+}
+
 void ContactStage::refreshBodies(std::vector<Cloth>& cloths, const std::vector<std::vector<Vec3>>& startPositions,
                                  std::vector<Obstacle>& obstacles) {
   for (std::size_t c = 0; c < cloths.size(); ++c) {

@@ -41,6 +41,11 @@ struct ContactStats {
 class ContactStage {
  public:
   explicit ContactStage(const Scene& scene);
+  // After a live edit of what the stage is built from (an obstacle added at runtime, the collision
+  // switches, the integrator kind, which decides whether vertices are held): rebuilt from `scene`
+  // as the constructor builds it, keeping the statistics. Broad-phase structures are rebuilt at
+  // the next step.
+  void reconfigure(const Scene& scene);
 
   bool runs() const { return runs_; }
   bool selfCollision() const { return selfCollision_; }

@@ -147,6 +147,14 @@ void beginObstacleStep(Obstacle& obstacle, double t, double h, const Vec3& gravi
   placeVertices(obstacle, obstacle.end, obstacle.x1);
 }
 
+void beginObstacleStepTo(Obstacle& obstacle, const RigidPose& end, double h) {
+  obstacle.stepDuration = h;
+  obstacle.start = obstacle.body.state.pose();
+  obstacle.end = end;
+  placeVertices(obstacle, obstacle.start, obstacle.x0);
+  placeVertices(obstacle, obstacle.end, obstacle.x1);
+}
+
 void endObstacleStep(Obstacle& obstacle) {
   switch (obstacle.motion) {
     case ObstacleMotion::Static:

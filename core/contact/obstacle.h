@@ -40,6 +40,11 @@ Obstacle buildObstacle(const ObstacleSpec& spec, const std::string& sceneFile, i
 // is the script's (kinematic), the current one (static), or where the current velocity takes it
 // after gravity (dynamic). Fills x0 and x1.
 void beginObstacleStep(Obstacle& obstacle, double t, double h, const Vec3& gravity);
+// Starts a step of length h that takes the obstacle from its current pose to `end` instead of where
+// its motion would (a kinematic tool dragged by hand in the editor). endObstacleStep then commits
+// it as it commits a scripted step: the velocity recorded is that of this displacement, which is
+// also the straight-line sweep CCD and the sharp-contact records see. Fills x0 and x1.
+void beginObstacleStepTo(Obstacle& obstacle, const RigidPose& end, double h);
 // Commits the end pose (a dynamic body's velocities include every contact impulse).
 void endObstacleStep(Obstacle& obstacle);
 

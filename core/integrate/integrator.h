@@ -9,6 +9,7 @@
 #include <memory>
 #include <vector>
 
+#include "forces/grab_spring.h"
 #include "mesh/topology_change.h"
 #include "scene/scene.h"
 #include "sim/stage_profile.h"
@@ -48,6 +49,9 @@ struct StepInputs {
   int threads = 1;
   // Linearized backward Euler only (the other integrators leave contact to the impulses).
   std::vector<HeldVertex>* heldVertices = nullptr;
+  // The editor's grab on this cloth (forces/grab_spring.h); null: nothing grabbed. Part of the
+  // implicit solve (force and Jacobian) in the implicit integrators.
+  const GrabSpring* grab = nullptr;
 };
 
 class Integrator {

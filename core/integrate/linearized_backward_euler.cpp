@@ -19,6 +19,7 @@ void LinearizedBackwardEuler::advance(Cloth& cloth, const StepInputs& in, StageP
   options.hessian = HessianMode::Definite;
   options.threads = in.threads;
   evaluateElasticForces(cloth, mesh.x, options, system_.elastic, system_.internalForce, &system_.matrix, profile);
+  if (in.grab != nullptr) addGrabForce(*in.grab, mesh.x, system_.internalForce, profile);
 
   {
     StageTimer timer(profile, "assemble");
@@ -28,6 +29,9 @@ void LinearizedBackwardEuler::advance(Cloth& cloth, const StepInputs& in, StageP
     SystemMatrix::Sparse& A = system_.matrix.matrix();
     A *= h * h + h * in.damping.stiffness;
     for (int i = 0; i < n; ++i) system_.matrix.addDiagonal(i, (1.0 + h * in.damping.mass) * mesh.mass[i]);
+    // The grab spring's Jacobian, implicit like the elastic one (so a stiff grab stays stable)
+    // but outside the stiffness damping: the spring is the user's hand, not the cloth.
+    if (in.grab != nullptr) system_.matrix.addBlock(in.grab->vertex, in.grab->vertex, -(h * h) * grabForceJacobian(*in.grab));
     system_.rhs.resize(3 * n);
     const auto v = flat(mesh.v);
     const auto fInt = flat(system_.internalForce);

@@ -16,6 +16,7 @@ double NewtonIntegrator::potential(const Cloth& cloth, const std::vector<Vec3>& 
       evaluateElasticForces(cloth, x, options, system_.elastic, system_.internalForce, nullptr, profile);
   const double h = in.dt;
   double inertia = 0.0, external = 0.0, damping = 0.0;
+  const double grab = in.grab != nullptr ? grabEnergy(*in.grab, x[in.grab->vertex]) : 0.0;
   for (size_t i = 0; i < x.size(); ++i) {
     const Vec3 d = x[i] - inertialTarget_[i];
     inertia += cloth.mesh.mass[i] * d.squaredNorm();
@@ -27,7 +28,7 @@ double NewtonIntegrator::potential(const Cloth& cloth, const std::vector<Vec3>& 
     dampedDisplacement_.noalias() = dampingHessian_ * displacement_;
     damping += displacement_.dot(dampedDisplacement_);
   }
-  return inertia / (2.0 * h * h) + elastic.membraneEnergy + elastic.bendingEnergy - external + damping / (2.0 * h);
+  return inertia / (2.0 * h * h) + elastic.membraneEnergy + elastic.bendingEnergy + grab - external + damping / (2.0 * h);
 }
 
 void NewtonIntegrator::advance(Cloth& cloth, const StepInputs& in, StageProfile& profile, SolverStats& stats) {
@@ -60,6 +61,7 @@ void NewtonIntegrator::advance(Cloth& cloth, const StepInputs& in, StageProfile&
     system_.matrix.setZero();
     const ElasticSummary elastic =
         evaluateElasticForces(cloth, x, options, system_.elastic, system_.internalForce, &system_.matrix, profile);
+    if (in.grab != nullptr) addGrabForce(*in.grab, x, system_.internalForce, profile);
     double phi = 0.0;
     {
       StageTimer timer(profile, "assemble");
@@ -82,8 +84,10 @@ void NewtonIntegrator::advance(Cloth& cloth, const StepInputs& in, StageProfile&
         damping += displacement_.dot(dampedDisplacement_);
         system_.matrix.matrix() += dampingHessian_ / h;
       }
-      phi = inertia / (2.0 * h * h) + elastic.membraneEnergy + elastic.bendingEnergy - external + damping / (2.0 * h);
+      const double grab = in.grab != nullptr ? grabEnergy(*in.grab, x[in.grab->vertex]) : 0.0;
+      phi = inertia / (2.0 * h * h) + elastic.membraneEnergy + elastic.bendingEnergy + grab - external + damping / (2.0 * h);
       for (int i = 0; i < n; ++i) system_.matrix.addDiagonal(i, mesh.mass[i] * (1.0 / (h * h) + in.damping.mass / h));
+      if (in.grab != nullptr) system_.matrix.addBlock(in.grab->vertex, in.grab->vertex, -grabForceJacobian(*in.grab));
       system_.rhs = -gradient_;
       system_.known.setZero(3 * n);  // pinned vertices already sit at their targets
       system_.matrix.constrainVertices(system_.pinnedVertices, system_.known, system_.rhs);

@@ -13,6 +13,7 @@ void SymplecticEuler::advance(Cloth& cloth, const StepInputs& in, StageProfile& 
   options.bending = in.bending;
   options.threads = in.threads;
   evaluateElasticForces(cloth, mesh.x, options, elastic_, internalForce_, nullptr, profile);
+  if (in.grab != nullptr) addGrabForce(*in.grab, mesh.x, internalForce_, profile);  // explicit: a stiff grab needs small steps
   pinTargets(cloth, in.time + h, pinnedVertices_, pinnedTargets_, profile);
 
   StageTimer timer(profile, "update");

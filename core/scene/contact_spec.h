@@ -23,6 +23,8 @@ struct ShapeSpec {
   std::filesystem::path meshPath;       // mesh: the OBJ file (resolved against the asset folders)
   std::filesystem::path sharpTagsPath;  // mesh: NAME.sharp.json beside the OBJ when it exists; empty: nothing sharp
   double scale = 1.0;                   // mesh: metres per OBJ unit
+
+  friend bool operator==(const ShapeSpec&, const ShapeSpec&) = default;
 };
 
 // A kinematic key: the pose of the body origin at a time (a scene with keys gives no placement).
@@ -30,6 +32,8 @@ struct ObstacleKeyframe {
   double time = 0.0;             // s
   Vec3 translate = Vec3::Zero(); // world position of the body origin (m)
   Vec3 rotateDeg = Vec3::Zero(); // about world x, then y, then z (degrees)
+
+  friend bool operator==(const ObstacleKeyframe&, const ObstacleKeyframe&) = default;
 };
 
 enum class ObstacleMotion {
@@ -49,6 +53,8 @@ struct ObstacleSpec {
   Vec3 angularVelocityDeg = Vec3::Zero();    // likewise, about world axes through the body origin (deg/s)
   double mass = 1.0;                         // dynamic: total mass (kg), uniform density
   double friction = 0.3;                     // Coulomb coefficient against cloth
+
+  friend bool operator==(const ObstacleSpec&, const ObstacleSpec&) = default;
 };
 
 // An infinite plane y = height that cloth vertices stay above.
@@ -56,6 +62,8 @@ struct GroundSpec {
   bool enabled = false;
   double height = 0.0;    // m
   double friction = 0.5;  // Coulomb coefficient against cloth
+
+  friend bool operator==(const GroundSpec&, const GroundSpec&) = default;
 };
 
 struct ContactSpec {
@@ -65,6 +73,8 @@ struct ContactSpec {
   double selfFriction = 0.2;       // Coulomb coefficient of cloth against cloth
   int ccdIterations = 8;           // pass 2: bound on iterated CCD impulses before impact zones
   int impactZoneIterations = 50;   // pass 3: bound on impact-zone merging rounds
+
+  friend bool operator==(const ContactSpec&, const ContactSpec&) = default;
 };
 
 }  // namespace weft

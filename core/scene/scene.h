@@ -19,11 +19,15 @@ struct GridSpec {
   double height = 1.0;  // extent along material y (m)
   int resolutionX = 32; // vertices along x (>= 2)
   int resolutionY = 32; // vertices along y (>= 2)
+
+  friend bool operator==(const GridSpec&, const GridSpec&) = default;
 };
 
 struct ObjSpec {
   std::filesystem::path path;  // resolved against the scene file's folder, then the project root
   double uvScale = 1.0;        // metres per UV unit: UVs times this become rest coordinates
+
+  friend bool operator==(const ObjSpec&, const ObjSpec&) = default;
 };
 
 // Where a mesh is placed in the world: world = rotate(rest) + translate. A grid lies in its rest
@@ -31,11 +35,15 @@ struct ObjSpec {
 struct Placement {
   Vec3 translate = Vec3::Zero();  // m
   Vec3 rotateDeg = Vec3::Zero();  // rotation about world x, then y, then z (degrees)
+
+  friend bool operator==(const Placement&, const Placement&) = default;
 };
 
 struct PinKeyframe {
   double time = 0.0;              // s
   Vec3 offset = Vec3::Zero();     // displacement from the pinned vertices' start positions (m)
+
+  friend bool operator==(const PinKeyframe&, const PinKeyframe&) = default;
 };
 
 // A group of pinned vertices, chosen by corner names, by a box in material space, or by id.
@@ -44,6 +52,8 @@ struct PinGroup {
   std::optional<std::pair<Vec2, Vec2>> restBox;  // min and max corner in material space (m)
   std::vector<int> vertices;         // explicit vertex ids
   std::vector<PinKeyframe> script;   // empty: fixed; otherwise piecewise-linear offsets over time, held after the last key
+
+  friend bool operator==(const PinGroup&, const PinGroup&) = default;
 };
 
 // How a cloth looks in the renderer; the simulation never reads it. The woven texture's threads
@@ -58,6 +68,8 @@ struct ClothAppearance {
   WeavePattern pattern = WeavePattern::Gingham;
   double threadPitch = 0.005;    // m between neighbouring threads
   int threadsPerBand = 8;        // gingham: threads per colour band
+
+  friend bool operator==(const ClothAppearance&, const ClothAppearance&) = default;
 };
 
 struct ClothSpec {
@@ -70,6 +82,8 @@ struct ClothSpec {
   double weftAngleDeg = 0.0;     // weft direction U in material space, degrees from material x
   std::vector<PinGroup> pins;
   ClothAppearance appearance;
+
+  friend bool operator==(const ClothSpec&, const ClothSpec&) = default;
 };
 
 struct WindSpec {
@@ -79,17 +93,23 @@ struct WindSpec {
   double lift = 0.2;             // lift coefficient (acts perpendicular to the relative velocity)
   double gustAmplitude = 0.0;    // relative amplitude of a smooth deterministic gust, in [0, 1]
   double gustFrequency = 0.5;    // Hz
+
+  friend bool operator==(const WindSpec&, const WindSpec&) = default;
 };
 
 struct DampingSpec {
   double mass = 0.0;       // mass-proportional damping coefficient (1/s): f = -mass * m v
   double stiffness = 0.0;  // stiffness-proportional (Rayleigh) damping coefficient (s): f = -stiffness * K v
+
+  friend bool operator==(const DampingSpec&, const DampingSpec&) = default;
 };
 
 struct ForcesSpec {
   Vec3 gravity{0.0, -9.81, 0.0};  // m/s^2
   WindSpec wind;
   DampingSpec damping;
+
+  friend bool operator==(const ForcesSpec&, const ForcesSpec&) = default;
 };
 
 enum class IntegratorKind { LinearizedBackwardEuler, Newton, SymplecticEuler };
@@ -107,6 +127,8 @@ struct SolverSpec {
   double linearTolerance = 1e-6;  // CG: stop at |r| <= tolerance * max(|b|, |one step's external impulse| in b's units)
   int linearMaxIterations = 1000; // CG: iteration bound
   int threads = 1;                // worker threads for force assembly (results do not depend on it)
+
+  friend bool operator==(const SolverSpec&, const SolverSpec&) = default;
 };
 
 // Stages a scene may switch off explicitly; a stage that has nothing to do is skipped anyway.
@@ -116,6 +138,8 @@ struct StageSwitches {
   bool gravity = true;
   bool collision = true;  // contact with obstacles, the ground and (if on) the cloth itself
   bool tearing = true;    // cloths whose material has a tear table tear
+
+  friend bool operator==(const StageSwitches&, const StageSwitches&) = default;
 };
 
 // How images of the scene are taken (`weft run --png`, the editor's first view). The camera orbits
@@ -124,12 +148,16 @@ struct CameraSpec {
   double yawDeg = 30.0;    // degrees about world +y; 0 looks along -z
   double pitchDeg = 20.0;  // degrees above the horizontal (positive looks down)
   std::optional<std::pair<Vec3, Vec3>> frame;  // world box (min, max, m) kept in view; unset: the action box
+
+  friend bool operator==(const CameraSpec&, const CameraSpec&) = default;
 };
 
 struct OutputSpec {
   int frames = 120;     // frames to simulate in `weft run`
   double fps = 30.0;    // frames per simulated second; steps per frame = round(1/(fps*dt))
   CameraSpec camera;
+
+  friend bool operator==(const OutputSpec&, const OutputSpec&) = default;
 };
 
 struct Scene {
@@ -145,6 +173,8 @@ struct Scene {
   std::vector<ObstacleSpec> obstacles;
   ContactSpec contact;
   TearingSpec tearing;
+
+  friend bool operator==(const Scene&, const Scene&) = default;
 };
 
 int stepsPerFrame(const Scene& scene);

@@ -15,6 +15,8 @@ struct TearingSpec {
   double minEdgeLength = 0.001;  // m (material space): no tear creates a shorter edge
   double minAngleDeg = 15.0;     // no tear creates a triangle with a smaller angle
   double snapAngleDeg = 5.0;     // a line this close to an existing edge follows the edge
+
+  friend bool operator==(const TearingSpec&, const TearingSpec&) = default;
 };
 
 }  // namespace weft

@@ -3,60 +3,10 @@
 #include <cmath>
 #include <cstring>
 
-#include "contact/obstacle.h"
 #include "forces/elastic_forces.h"
-#include "forces/wind.h"
-#include "integrate/integrator.h"
-#include "sim/cloth.h"
+#include "sim/world_impl.h"
 
 namespace weft {
-
-struct World::Impl {
-  Scene scene;
-  std::vector<Cloth> cloths;
-  std::vector<std::unique_ptr<Integrator>> integrators;
-  std::vector<Obstacle> obstacles;
-  std::unique_ptr<ContactStage> contact;
-  std::unique_ptr<TearStage> tearing;
-  std::vector<std::vector<Vec3>> startPositions;  // each cloth's positions at the start of the step (contact)
-  double time = 0.0;
-  long long steps = 0;
-  StageProfile profile;
-  SolverStats stats;
-
-  bool windRuns() const { return scene.stages.wind && windEnabled(scene.forces.wind); }
-  bool gravityRuns() const { return scene.stages.gravity && scene.forces.gravity.squaredNorm() > 0.0; }
-  bool bendingRuns(const Cloth& cloth) const { return scene.stages.bending && !cloth.hinges.empty(); }
-  void beginObstacles(const StepInputs& inputs) {
-    if (obstacles.empty()) return;
-    StageTimer timer(profile, "obstacles");
-    for (Obstacle& o : obstacles) beginObstacleStep(o, inputs.time, inputs.dt, inputs.gravity);
-  }
-  void endObstacles() {
-    if (obstacles.empty()) return;
-    StageTimer timer(profile, "obstacles");
-    for (Obstacle& o : obstacles) endObstacleStep(o);
-  }
-  void saveStartPositions() {
-    for (size_t c = 0; c < cloths.size(); ++c) startPositions[c] = cloths[c].mesh.x;
-  }
-  // Tears what must tear, and has whatever depends on a torn cloth's topology patched with what
-  // changed (the matrix pattern, the collision topology and broad phase).
-  void tear(double time) {
-    if (!tearing->runs()) return;
-    const std::vector<TopologyChange> changes = tearing->run(cloths, time, profile);
-    for (size_t c = 0; c < cloths.size(); ++c) {
-      if (changes[c].empty()) continue;
-      integrators[c]->topologyChanged(cloths[c], changes[c]);
-      contact->clothTopologyChanged(static_cast<int>(c), cloths[c].mesh, changes[c]);
-    }
-  }
-  bool pinsRun() const {
-    for (const Cloth& cloth : cloths)
-      if (!cloth.pins.empty()) return true;
-    return false;
-  }
-};
 
 World::World(const Scene& scene) : impl_(std::make_unique<Impl>()) {
   impl_->scene = scene;
@@ -70,6 +20,8 @@ World::World(const Scene& scene) : impl_(std::make_unique<Impl>()) {
   impl_->contact = std::make_unique<ContactStage>(scene);
   impl_->tearing = std::make_unique<TearStage>(scene);
   impl_->startPositions.resize(impl_->cloths.size());
+  impl_->kinematicTargets.resize(impl_->obstacles.size());
+  impl_->kinematicFrom.resize(impl_->obstacles.size(), Vec3::Zero());
 }
 
 World::~World() = default;
@@ -86,12 +38,13 @@ void World::step() {
     inputs.wind = w.windRuns() ? &w.scene.forces.wind : nullptr;
     inputs.damping = w.scene.forces.damping;
     inputs.threads = std::max(1, w.scene.solver.threads);
-    w.beginObstacles(inputs);
+    w.beginObstacles(inputs, s, substeps);
     if (w.contact->runs()) w.saveStartPositions();
     w.contact->prepare(w.cloths, w.startPositions, w.obstacles, h, w.profile);
     for (size_t c = 0; c < w.cloths.size(); ++c) {
       inputs.bending = w.bendingRuns(w.cloths[c]);
       inputs.heldVertices = w.contact->heldVertices(static_cast<int>(c));
+      inputs.grab = w.grabOn(c);
       w.integrators[c]->advance(w.cloths[c], inputs, w.profile, w.stats);
     }
     w.contact->applyHeldReactions(w.cloths, w.obstacles, h);
@@ -100,7 +53,7 @@ void World::step() {
     w.tear(inputs.time + h);
   }
   ++w.steps;
-  w.time = w.steps * w.scene.solver.dt;  // no drift from summing dt
+  w.time = w.timeOrigin + static_cast<double>(w.steps - w.stepsAtOrigin) * w.scene.solver.dt;
 }
 
 double World::time() const { return impl_->time; }
@@ -133,6 +86,7 @@ std::vector<std::string> World::stagesRun() const {
   if (w.windRuns()) stages.push_back("wind");
   if (w.pinsRun()) stages.push_back("pins");
   stages.push_back("membrane");
+  if (w.grab) stages.push_back("grab");
   bool bending = false;
   for (const Cloth& cloth : w.cloths) bending = bending || w.bendingRuns(cloth);
   if (bending) stages.push_back("bending");

@@ -1,13 +1,20 @@
 #pragma once
 // The simulated world: cloths and forces advanced in time. World::step is a short list of named
 // stages, each timed into the profile.
+//
+// The editor changes a running world between steps through two groups of calls:
+//  - live edits (world_live_edits.cpp; sim/live_edit.h decides which edits of a scene qualify):
+//    they keep positions, velocities and the torn topology, and update scene() to match;
+//  - interaction (world_interaction.cpp): grabbing a vertex, throwing a ball, dragging a tool.
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "contact/contact_passes.h"
 #include "contact/contact_stage.h"
+#include "forces/grab_spring.h"
 #include "mesh/cloth_mesh.h"
 #include "scene/scene.h"
 #include "sim/stage_profile.h"
@@ -34,6 +41,12 @@ struct WorldMetrics {
   bool finite = true;            // every position and velocity is finite
 };
 
+// The vertex the user holds and where the grab spring pulls it.
+struct GrabState {
+  int cloth = 0;
+  GrabSpring spring;  // vertex id (stable across tears), target (m), stiffness (N/m)
+};
+
 class World {
  public:
   explicit World(const Scene& scene);
@@ -42,6 +55,47 @@ class World {
   World& operator=(const World&) = delete;
 
   void step();  // advance by scene.solver.dt
+
+  // Live edits, applied between steps. Indices out of range throw std::out_of_range.
+  // The material: elasticity, bending, density (the lumped masses are recomputed from the current,
+  // possibly torn, triangles and the integrator refactors), the tear table (tearing starts or
+  // stops with it).
+  void setClothMaterial(int cloth, const Material& material);
+  void setClothWeftAngle(int cloth, double degrees);  // membrane elements and hinges are rebuilt
+  void setClothAppearance(int cloth, const ClothAppearance& appearance);  // no simulation effect
+  void setClothLabels(int cloth, const std::string& name, const std::string& materialName);
+  void setForces(const ForcesSpec& forces);  // read afresh every step
+  // dt, substeps and threads are read every step (time() continues from where it is); any other
+  // change (integrator kind, linear solver, preconditioner, tolerances, iteration bounds) builds
+  // fresh integrators, dropping their cached factorizations.
+  void setSolver(const SolverSpec& solver);
+  void setOutput(const OutputSpec& output);  // frames, fps, camera: no simulation effect
+  void setSceneLabels(const std::string& name, const std::string& description);
+
+  // Grab: a zero-rest-length spring (forces/grab_spring.h) from `vertex` of `cloth` to `target`,
+  // part of the implicit solve; the "grab" stage runs while it is held. One grab at a time: a new
+  // grab replaces the old one. Tears never renumber vertices, so the grab stays on the vertex id
+  // (the original of a split vertex keeps it). Throws std::out_of_range for a bad cloth or vertex,
+  // std::invalid_argument for a negative or non-finite stiffness.
+  void grab(int cloth, int vertex, const Vec3& target, double stiffness);
+  void moveGrab(const Vec3& target);  // no effect without a grab
+  void releaseGrab();
+  std::optional<GrabState> grabState() const;
+
+  // Adds a dynamic rigid sphere (what a scene obstacle with shape sphere and motion dynamic
+  // builds) at `position` moving at `velocity`, and returns its obstacle index. When the scene had
+  // no contact with obstacles, this turns it on (only it: self-collision and the ground, which did
+  // not run, stay off). The contact stage is rebuilt (its statistics are kept).
+  int throwBall(const Vec3& position, const Vec3& velocity, double radius, double mass);
+
+  // A kinematic obstacle follows `position` (its orientation kept) instead of its script, starting
+  // with the next step: each step takes it from where it is to there (in equal parts over the
+  // substeps), and its recorded velocity is that displacement over the step, as CCD and the sharp
+  // records see it. Clearing hands it back to its script at the current time (from where the
+  // script is, which may be a jump). Throws std::out_of_range for a bad index,
+  // std::invalid_argument for an obstacle that is not kinematic.
+  void setKinematicOverride(int obstacle, const Vec3& position);
+  void clearKinematicOverride(int obstacle);
 
   double time() const;
   long long stepCount() const;

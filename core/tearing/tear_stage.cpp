@@ -51,6 +51,10 @@ TearStage::TearStage(const Scene& scene) : spec_(scene.tearing) {
   search_.onlyTheBest = spec_.maxTearsPerStep == 1;
   selection_.maxTearsPerStep = spec_.maxTearsPerStep;
   selection_.minSpacing = spec_.minSpacing;
+  materialsChanged(scene);
+}
+
+void TearStage::materialsChanged(const Scene& scene) {
   bool anyTable = false;
   for (const ClothSpec& cloth : scene.cloths) anyTable = anyTable || cloth.material.tearTable.has_value();
   runs_ = scene.stages.tearing && anyTable;

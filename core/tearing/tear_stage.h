@@ -41,6 +41,9 @@ struct TearStats {
 class TearStage {
  public:
   explicit TearStage(const Scene& scene);
+  // After a live edit of the cloths' materials: whether the stage runs follows their tear tables
+  // (the log, the statistics and the per-cloth caches are kept).
+  void materialsChanged(const Scene& scene);
   // The scene has a cloth with a tear table and tearing is on.
   bool runs() const { return runs_; }
   // Tears what must tear; returns, per cloth, what all its tears of this step changed together

@@ -1,0 +1,85 @@
+// Live edits of a running World (world.h): each keeps positions, velocities and the torn topology,
+// refreshes what was derived from the edited value, and records the value in the World's scene.
+#include <stdexcept>
+
+#include "sim/world_impl.h"
+
+namespace weft {
+
+namespace {
+
+Cloth& clothAt(std::vector<Cloth>& cloths, int cloth) {
+  if (cloth < 0 || cloth >= static_cast<int>(cloths.size()))
+    throw std::out_of_range("no cloth " + std::to_string(cloth) + " (the world has " + std::to_string(cloths.size()) + ")");
+  return cloths[cloth];
+}
+
+// The settings an integrator is built from (makeIntegrator), as opposed to those it is handed each
+// step (dt, substeps, threads).
+bool integratorSettingsDiffer(const SolverSpec& a, SolverSpec b) {
+  b.dt = a.dt;
+  b.substeps = a.substeps;
+  b.threads = a.threads;
+  return !(a == b);
+}
+
+}  // namespace
+
+void World::setClothMaterial(int index, const Material& material) {
+  Impl& w = *impl_;
+  Cloth& cloth = clothAt(w.cloths, index);
+  cloth.material = material;
+  // Masses from the current triangles: after tears the same lumping the surgery keeps up.
+  assignLumpedMasses(cloth.mesh, material.areaDensity);
+  rebuildElements(cloth);  // the bending model decides which hinges exist
+  // The masses and possibly the hinges changed: a fresh pattern, so the lagged factorization is
+  // redone at the next solve instead of preconditioning with the old matrix.
+  w.integrators[index]->topologyChanged();
+  w.scene.cloths[index].material = material;
+  w.tearing->materialsChanged(w.scene);
+}
+
+void World::setClothWeftAngle(int index, double degrees) {
+  Impl& w = *impl_;
+  Cloth& cloth = clothAt(w.cloths, index);
+  cloth.weftAngleRad = degToRad(degrees);
+  rebuildElements(cloth);  // membrane elements and hinge stiffnesses are oriented by the weft
+  w.integrators[index]->topologyChanged();
+  w.scene.cloths[index].weftAngleDeg = degrees;
+}
+
+void World::setClothAppearance(int index, const ClothAppearance& appearance) {
+  clothAt(impl_->cloths, index);
+  impl_->scene.cloths[index].appearance = appearance;
+}
+
+void World::setClothLabels(int index, const std::string& name, const std::string& materialName) {
+  clothAt(impl_->cloths, index).name = name;
+  impl_->scene.cloths[index].name = name;
+  impl_->scene.cloths[index].materialName = materialName;
+}
+
+void World::setForces(const ForcesSpec& forces) { impl_->scene.forces = forces; }
+
+void World::setSolver(const SolverSpec& solver) {
+  Impl& w = *impl_;
+  const SolverSpec old = w.scene.solver;
+  if (solver.dt != old.dt) {
+    w.timeOrigin = w.time;
+    w.stepsAtOrigin = w.steps;
+  }
+  w.scene.solver = solver;
+  if (!integratorSettingsDiffer(old, solver)) return;
+  for (auto& integrator : w.integrators) integrator = makeIntegrator(solver);
+  // Only linearized backward Euler holds resting vertices in its solve (contact_stage.h).
+  if (solver.integrator != old.integrator) w.contact->reconfigure(w.scene);
+}
+
+void World::setOutput(const OutputSpec& output) { impl_->scene.output = output; }
+
+void World::setSceneLabels(const std::string& name, const std::string& description) {
+  impl_->scene.name = name;
+  impl_->scene.description = description;
+}
+
+}  // namespace weft
