@@ -1,4 +1,5 @@
-// `weft edit [SCENE]` (and `weft` alone): the scene live in a window (live_viewer.cpp). Where no
+// `weft edit [SCENE]` (and `weft` alone): the editor, the scene live in a window with its panels
+// (editor_app.cpp). Where no
 // window can open (no display, or GLFW fails) it says why and runs the same scene headless
 // instead, with PNG frames in out/<scene name>/frames, so it always shows the user something.
 #include <algorithm>
@@ -12,8 +13,8 @@
 #include "command.h"
 #include "default_scene.h"
 #include "glfw_window.h"
-#include "live_simulation.h"
-#include "live_viewer.h"
+#include "editor_app.h"
+#include "scene/scene_json.h"
 #include "run_command.h"
 #include "util/input_error.h"
 
@@ -63,19 +64,27 @@ int runHeadlessInstead(const EditOptions& options, const fs::path& sceneFile, co
 int edit(const EditOptions& options) {
   const fs::path sceneFile = options.scene.empty() ? defaultScenePath() : fs::path(options.scene);
   // A bad scene is reported as such, before any window opens or any fallback runs.
-  std::optional<ui::LiveSimulation> simulation;
+  std::string sceneName;
   try {
-    simulation.emplace(sceneFile, options.overrides);
+    sceneName = loadScene(sceneFile, options.overrides).name;
   } catch (const InputError& e) {
     std::cerr << "weft: " << e.what() << "\n";
     return kExitBadInput;
   }
 
   try {
-    return runLiveViewer(*simulation, LiveViewerOptions{options.frames, options.screenshot});
+    EditorOptions editor;
+    editor.scene = fs::absolute(sceneFile);
+    editor.overrides = options.overrides;
+    editor.frames = options.frames;
+    editor.screenshot = options.screenshot;
+    return runEditor(editor);
   } catch (const ui::WindowUnavailable& e) {
     std::cerr << "weft edit: cannot open a window (" << e.what() << "); running headless instead\n";
-    return runHeadlessInstead(options, sceneFile, simulation->scene().name);
+    return runHeadlessInstead(options, sceneFile, sceneName);
+  } catch (const InputError& e) {
+    std::cerr << "weft: " << e.what() << "\n";
+    return kExitBadInput;
   }
 }
 
@@ -92,10 +101,10 @@ Command addEditCommand(CLI::App& app) {
   };
   auto parsed = std::make_shared<Parsed>();
   CLI::App* cli = app.add_subcommand(
-      "edit", "Watch a scene simulate live in a window (headless PNG frames when no window can open)");
+      "edit", "Edit a scene and watch it simulate live (headless PNG frames when no window can open)");
   cli->add_option("scene", parsed->options.scene, "Scene file (default: presets/scenes/hanging-sheet.json)");
   cli->add_option("--set", parsed->options.overrides,
-                  "Override a scene value, e.g. --set solver.dt=0.005 (repeatable; kept when R reloads)")
+                  "Override a scene value, e.g. --set solver.dt=0.005 (repeatable; an undoable, unsaved edit)")
       ->type_name("PATH=VALUE")
       ->allow_extra_args(false);
   parsed->framesOption = cli->add_option("--frames", parsed->frames,

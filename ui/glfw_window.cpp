@@ -75,6 +75,8 @@ bool GlfwWindow::shouldClose() const { return glfwWindowShouldClose(window_) == 
 
 void GlfwWindow::requestClose() { glfwSetWindowShouldClose(window_, GLFW_TRUE); }
 
+void GlfwWindow::cancelClose() { glfwSetWindowShouldClose(window_, GLFW_FALSE); }
+
 void GlfwWindow::pollEvents() {
   input_.keysPressed.clear();
   input_.mouse.scrollY = 0.0;

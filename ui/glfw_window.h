@@ -47,6 +47,10 @@ class GlfwWindow {
 
   bool shouldClose() const;  // the user closed the window (or requestClose was called)
   void requestClose();
+  void cancelClose();  // the user chose to stay (e.g. at an unsaved-changes prompt)
+
+  // For Dear ImGui's GLFW backend, which installs its callbacks after (and chaining to) ours.
+  GLFWwindow* handle() const { return window_; }
 
   // Forgets the previous poll's key presses and scrolling, then gathers what happened since.
   void pollEvents();

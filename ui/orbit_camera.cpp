@@ -44,6 +44,20 @@ Eigen::Matrix4f OrbitCamera::projection(double aspect) const {
   return p.cast<float>();
 }
 
+void cameraRay(const OrbitCamera& camera, double x, double y, int width, int height, Vec3& outOrigin, Vec3& outDir) {
+  const Eigen::Matrix4d view = camera.view().cast<double>();
+  const Vec3 side = view.block<1, 3>(0, 0).transpose();
+  const Vec3 up = view.block<1, 3>(1, 0).transpose();
+  const Vec3 forward = -view.block<1, 3>(2, 0).transpose();
+  const double tanY = std::tan(radians(camera.fovYDeg) / 2.0);
+  const double aspect = height > 0 ? static_cast<double>(width) / height : 1.0;
+  // Normalized device coordinates, y up.
+  const double ndcX = 2.0 * x / std::max(width, 1) - 1.0;
+  const double ndcY = 1.0 - 2.0 * y / std::max(height, 1);
+  outOrigin = camera.eye();
+  outDir = (forward + ndcX * tanY * aspect * side + ndcY * tanY * up).normalized();
+}
+
 OrbitCamera frameBox(const Vec3& boxMin, const Vec3& boxMax, double aspect, double yawDeg, double pitchDeg) {
   OrbitCamera camera;
   camera.yawDeg = yawDeg;

@@ -22,6 +22,10 @@ struct OrbitCamera {
   Eigen::Matrix4f projection(double aspect) const;  // aspect = width / height
 };
 
+// The ray from the eye through the point (x, y) of a width x height image, in pixels from its
+// top-left corner (where the mouse is): origin at the eye, unit direction. For picking.
+void cameraRay(const OrbitCamera& camera, double x, double y, int width, int height, Vec3& outOrigin, Vec3& outDir);
+
 // A camera at the given yaw and pitch that keeps the whole box [boxMin, boxMax] in view (every
 // corner inside the view, with a small margin), for an image of the given aspect.
 OrbitCamera frameBox(const Vec3& boxMin, const Vec3& boxMax, double aspect, double yawDeg = 30.0,

@@ -68,6 +68,9 @@ RigidPose predictedEnd(const RigidBody& body, double h) {
   return moved.state.pose();
 }
 
+
+}  // namespace
+
 void markSharpFeatures(const SharpTags& tags, Obstacle& obstacle) {
   obstacle.sharpVertex.assign(obstacle.bodyVertices.size(), 0);
   for (int v : tags.vertices) obstacle.sharpVertex[v] = 1;
@@ -77,8 +80,6 @@ void markSharpFeatures(const SharpTags& tags, Obstacle& obstacle) {
     obstacle.sharpEdge[e] = std::binary_search(tags.edges.begin(), tags.edges.end(), edge) ? 1 : 0;
   }
 }
-
-}  // namespace
 
 Obstacle buildObstacle(const ObstacleSpec& spec, const std::string& sceneFile, int index) {
   Obstacle obstacle;

@@ -11,6 +11,7 @@
 #include "rigid/kinematic_script.h"
 #include "rigid/rigid_body.h"
 #include "rigid/rigid_pose.h"
+#include "rigid/sharp_tags.h"
 #include "scene/contact_spec.h"
 #include "util/types.h"
 
@@ -31,6 +32,10 @@ struct Obstacle {
   double stepDuration = 0.0;  // s
   std::vector<Vec3> x0, x1;
 };
+
+// Marks the features `tags` names sharp and every other one not (the tags' vertex ids are the
+// obstacle's; an edge names its two vertices). Ids out of range are a programming error.
+void markSharpFeatures(const SharpTags& tags, Obstacle& obstacle);
 
 // Loads or generates the mesh, its sharp tags and mass properties, and places it. Throws
 // InputError naming the scene file and the obstacle's JSON field for a bad mesh or tag file.

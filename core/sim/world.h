@@ -16,6 +16,7 @@
 #include "contact/contact_stage.h"
 #include "forces/grab_spring.h"
 #include "mesh/cloth_mesh.h"
+#include "rigid/sharp_tags.h"
 #include "scene/scene.h"
 #include "sim/stage_profile.h"
 #include "tearing/tear_stage.h"
@@ -69,7 +70,10 @@ class World {
   // change (integrator kind, linear solver, preconditioner, tolerances, iteration bounds) builds
   // fresh integrators, dropping their cached factorizations.
   void setSolver(const SolverSpec& solver);
-  void setOutput(const OutputSpec& output);  // frames, fps, camera: no simulation effect
+  void setOutput(const OutputSpec& output);
+  // A tool's sharp tags (the editor's tools panel): the contact stage records hits of the newly
+  // sharp features from the next step on. Throws std::out_of_range for a bad obstacle or id.
+  void setObstacleSharpTags(int obstacle, const SharpTags& tags);  // frames, fps, camera: no simulation effect
   void setSceneLabels(const std::string& name, const std::string& description);
 
   // Grab: a zero-rest-length spring (forces/grab_spring.h) from `vertex` of `cloth` to `target`,

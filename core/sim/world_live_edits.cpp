@@ -77,6 +77,20 @@ void World::setSolver(const SolverSpec& solver) {
 
 void World::setOutput(const OutputSpec& output) { impl_->scene.output = output; }
 
+void World::setObstacleSharpTags(int index, const SharpTags& tags) {
+  std::vector<Obstacle>& obstacles = impl_->obstacles;
+  if (index < 0 || index >= static_cast<int>(obstacles.size())) throw std::out_of_range("no obstacle " + std::to_string(index));
+  Obstacle& obstacle = obstacles[static_cast<std::size_t>(index)];
+  const int vertices = static_cast<int>(obstacle.bodyVertices.size());
+  for (int v : tags.vertices) {
+    if (v < 0 || v >= vertices) throw std::out_of_range("no vertex " + std::to_string(v) + " on " + obstacle.name);
+  }
+  for (const auto& e : tags.edges) {
+    if (e[0] < 0 || e[1] >= vertices || e[0] >= e[1]) throw std::out_of_range("no edge on " + obstacle.name);
+  }
+  markSharpFeatures(tags, obstacle);
+}
+
 void World::setSceneLabels(const std::string& name, const std::string& description) {
   impl_->scene.name = name;
   impl_->scene.description = description;

@@ -54,7 +54,7 @@ class WeftCli : public ::testing::Test {
   // as `env -u DISPLAY` or `xvfb-run`. Pictures come from llvmpipe, as in the renderer's tests.
   Result weft(const std::string& arguments, const std::string& environment = "") const {
     const fs::path log = root_ / "output.txt";
-    const std::string command = "cd '" + work().string() + "' && GALLIUM_DRIVER=llvmpipe " + environment + " '" +
+    const std::string command = "cd '" + work().string() + "' && GALLIUM_DRIVER=llvmpipe WEFT_AUTOSAVE_DIR='" + (root_ / "autosave").string() + "' " + environment + " '" +
                                 std::string(WEFT_BINARY) + "' " + arguments +
                                 " > '" + log.string() + "' 2>&1";
     const int status = std::system(command.c_str());
@@ -343,7 +343,7 @@ bool onPath(const std::string& program) {
 }
 
 // `weft edit` in a window, on a virtual X display (Xvfb) with Mesa's software GL.
-std::string virtualDisplay() { return "LIBGL_ALWAYS_SOFTWARE=1 xvfb-run -a -s '-screen 0 1280x800x24'"; }
+std::string virtualDisplay() { return "LIBGL_ALWAYS_SOFTWARE=1 xvfb-run -a -s '-screen 0 1440x900x24'"; }
 
 // Pixels with colour in them: the background and the ground are grey, the cloth's weave is not.
 long long colouredPixels(const weft::test::RgbaImage& image) {
@@ -362,8 +362,8 @@ TEST_F(WeftCli, EditShowsTheSceneInAWindowAndTakesAScreenshot) {
   EXPECT_EQ(r.output.find("cannot open a window"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("wrote shot.png"), std::string::npos) << r.output;
   const weft::test::RgbaImage shot = weft::test::readPng(work() / "shot.png");
-  EXPECT_EQ(shot.width, 1280);
-  EXPECT_EQ(shot.height, 800);
+  EXPECT_EQ(shot.width, 1440);
+  EXPECT_EQ(shot.height, 900);
   // The sheet fills a good part of the default framing.
   EXPECT_GT(colouredPixels(shot), shot.width * shot.height / 50) << "no cloth in the screenshot";
   EXPECT_FALSE(fs::exists(work() / "out")) << "a window run writes no headless frames";

@@ -108,6 +108,7 @@ inline std::string checkSnapshot(const RgbaImage& actual, const std::filesystem:
   const fs::path actualFile = fs::path(goldenFile).replace_extension(".actual.png");
   const fs::path diffFile = fs::path(goldenFile).replace_extension(".diff.png");
   const RgbaImage golden = readPng(goldenFile);
+  fs::create_directories(goldenFile.parent_path());
   if (golden.empty()) {
     writePng(actualFile, actual);
     return "no golden " + goldenFile.string() + " (actual written to " + actualFile.string() +

@@ -1,0 +1,30 @@
+#pragma once
+// The editor behind `weft edit` and `weft`: a window showing the scene as it simulates, with the
+// panels of ui/editor around it. One loop: poll input, panels, playback, draw the scene, draw the
+// panels, swap; an autosave every few seconds while there are unsaved edits.
+//
+// Mouse (outside the panels): left drag orbits, right or middle drag pans, the wheel zooms. Keys
+// (outside text fields): Space play/pause, N step, R reset, Ctrl+Z undo, Ctrl+Y redo, Ctrl+S save,
+// Esc quit (asking first when there are unsaved edits).
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "editor/autosave.h"
+
+namespace weft::app {
+
+struct EditorOptions {
+  std::filesystem::path scene;
+  std::vector<std::string> overrides;  // --set: applied as the first (undoable, unsaved) edit
+  std::optional<int> frames;           // quit after this many displayed frames (tests, scripts)
+  std::filesystem::path screenshot;    // when set: the last displayed frame as PNG, written on quit
+  std::filesystem::path autosaveDir = editor::Autosave::defaultDirectory();
+};
+
+// Opens the window and runs until the user quits. Throws ui::WindowUnavailable, before anything
+// is shown, when no window can open; InputError for a bad scene. Returns an ExitCode.
+int runEditor(const EditorOptions& options);
+
+}  // namespace weft::app

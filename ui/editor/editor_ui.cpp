@@ -1,0 +1,140 @@
+#include "editor_ui.h"
+
+#include <imgui.h>
+
+namespace weft::editor {
+
+namespace {
+
+// Panels start in a column down the left and right of the viewport; the user can move them.
+void placeNext(float x, float y, float width, float height) {
+  ImGui::SetNextWindowPos(ImVec2(x, y), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(width, height), ImGuiCond_FirstUseEver);
+}
+
+void drawStatusBar(const EditorSession& session) {
+  const ImGuiIO& io = ImGui::GetIO();
+  ImGui::SetNextWindowPos(ImVec2(0, io.DisplaySize.y - 24));
+  ImGui::SetNextWindowSize(ImVec2(io.DisplaySize.x, 24));
+  ImGui::Begin("##status", nullptr,
+               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
+                   ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoBringToFrontOnFocus);
+  ImGui::Text("%s%s  |  %s%s", session.document().file().filename().string().c_str(), session.dirty() ? " (unsaved)" : "",
+              session.resetPending() ? "RESET NEEDED to apply the last edit  |  " : "", session.status.c_str());
+  ImGui::End();
+}
+
+void drawQuitPrompt(EditorSession& session, EditorUi& ui) {
+  if (ui.quit != QuitPrompt::Asking) return;
+  if (!session.dirty()) {
+    ui.quit = QuitPrompt::Confirmed;
+    return;
+  }
+  ImGui::OpenPopup("Unsaved changes");
+  if (ImGui::BeginPopupModal("Unsaved changes", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+    ImGui::Text("%s has unsaved changes.", session.document().file().filename().string().c_str());
+    if (ImGui::Button("Save and quit")) {
+      try {
+        session.save();
+        ui.quit = QuitPrompt::Confirmed;
+      } catch (const std::exception& e) {
+        session.status = e.what();
+        ui.quit = QuitPrompt::None;
+      }
+      ImGui::CloseCurrentPopup();
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Discard and quit")) {
+      ui.quit = QuitPrompt::Confirmed;
+      ImGui::CloseCurrentPopup();
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Cancel")) {
+      ui.quit = QuitPrompt::None;
+      ImGui::CloseCurrentPopup();
+    }
+    ImGui::EndPopup();
+  }
+}
+
+// Opening another scene replaces this one: unsaved edits are saved or given up on purpose.
+void drawOpenPrompt(EditorSession& session, EditorUi& ui) {
+  if (ui.panels.openRequest.empty() || ui.open == OpenPrompt::Confirmed) return;
+  if (!session.dirty()) {
+    ui.open = OpenPrompt::Confirmed;
+    return;
+  }
+  ui.open = OpenPrompt::Asking;
+  ImGui::OpenPopup("Open another scene");
+  if (ImGui::BeginPopupModal("Open another scene", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+    ImGui::Text("%s has unsaved changes.", session.document().file().filename().string().c_str());
+    if (ImGui::Button("Save, then open")) {
+      try {
+        session.save();
+        ui.open = OpenPrompt::Confirmed;
+      } catch (const std::exception& e) {
+        session.status = e.what();
+        ui.open = OpenPrompt::None;
+        ui.panels.openRequest.clear();
+      }
+      ImGui::CloseCurrentPopup();
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Discard them, open")) {
+      ui.open = OpenPrompt::Confirmed;
+      ImGui::CloseCurrentPopup();
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Cancel")) {
+      ui.open = OpenPrompt::None;
+      ui.panels.openRequest.clear();
+      ImGui::CloseCurrentPopup();
+    }
+    ImGui::EndPopup();
+  }
+}
+
+void drawRecoveryPrompt(EditorUi& ui) {
+  if (!ui.recovery || ui.recoveryChoice != RecoveryChoice::Undecided) return;
+  ImGui::OpenPopup("Recover unsaved edits?");
+  if (ImGui::BeginPopupModal("Recover unsaved edits?", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+    ImGui::Text("Weft stopped with unsaved edits to %s (autosaved %s).", ui.recovery->original.string().c_str(),
+                ui.recovery->savedAt.c_str());
+    if (ImGui::Button("Recover them")) {
+      ui.recoveryChoice = RecoveryChoice::Recover;
+      ImGui::CloseCurrentPopup();
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Discard them")) {
+      ui.recoveryChoice = RecoveryChoice::Discard;
+      ImGui::CloseCurrentPopup();
+    }
+    ImGui::EndPopup();
+  }
+}
+
+}  // namespace
+
+void drawEditorUi(EditorSession& session, EditorUi& ui) {
+  const float w = ImGui::GetIO().DisplaySize.x;
+  placeNext(8, 8, 300, 300);
+  drawScenePanel(session, ui.panels);
+  placeNext(8, 316, 300, 150);
+  drawPlaybackPanel(session, ui.panels);
+  placeNext(8, 474, 300, 260);
+  drawSolverPanel(session, ui.panels);
+  placeNext(8, 742, 300, 130);
+  drawToolsPanel(session, ui.panels);
+  placeNext(w - 468, 8, 460, 420);
+  drawMaterialPanel(session, ui.panels);
+  placeNext(w - 468, 436, 250, 430);
+  drawTearTablePanel(session, ui.panels);
+  placeNext(w - 212, 436, 204, 260);
+  drawWeftPanel(session, ui.panels);
+  drawStatusBar(session);
+  drawQuitPrompt(session, ui);
+  drawOpenPrompt(session, ui);
+  drawRecoveryPrompt(ui);
+}
+
+}  // namespace weft::editor

@@ -1,0 +1,27 @@
+#pragma once
+// The part of the editor's window the scene is drawn in: between the left column of panels and
+// the right one, above the status bar, so that the panels do not hide the cloth. The panels can
+// still be moved over it.
+#include "orbit_camera.h"
+#include "render_view.h"
+#include "scene_renderer.h"
+
+namespace weft::editor {
+
+struct ViewportRect {
+  int x = 0, y = 0;           // top-left corner, pixels from the window's top-left
+  int width = 1, height = 1;  // pixels
+  double aspect() const { return static_cast<double>(width) / height; }
+  bool contains(double px, double py) const { return px >= x && py >= y && px < x + width && py < y + height; }
+};
+
+// The scene's rectangle in a display of the given size (falls back to the whole display when
+// the window is too narrow for the columns).
+ViewportRect sceneViewport(int displayWidth, int displayHeight);
+
+// Clears the bound framebuffer (displayWidth x displayHeight) to the background and draws the
+// view into `rect` only.
+void drawSceneViewport(ui::SceneRenderer& renderer, const ui::RenderView& view, const ui::OrbitCamera& camera,
+                       const ViewportRect& rect, int displayWidth, int displayHeight);
+
+}  // namespace weft::editor

@@ -1,0 +1,177 @@
+// Material: the preset, density, the measured elasticity table (c11, c12, c22, c33 for each
+// measured direction, Wang et al. 2011) with a plot of each coefficient over angle, bending, an
+// isotropic mode, and "save as a new preset". Editing a value of a preset makes the cloth's
+// material inline in the scene (scene_edits.h); the preset file itself is only written by "save
+// as preset", under a new name.
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "editor/scene_edits.h"
+#include "material/material.h"
+#include "panels.h"
+#include "scene/scene_json.h"
+#include "util/atomic_file.h"
+
+namespace weft::editor {
+
+namespace {
+
+std::vector<std::string> materialPresets(const Scene& scene) {
+  std::vector<std::string> names;
+  for (const auto& dir : defaultSearchPaths(scene.file).materialDirs) {
+    std::error_code ec;
+    for (const auto& entry : std::filesystem::directory_iterator(dir, ec)) {
+      if (entry.path().extension() == ".json") names.push_back(entry.path().stem().string());
+    }
+  }
+  std::sort(names.begin(), names.end());
+  names.erase(std::unique(names.begin(), names.end()), names.end());
+  return names;
+}
+
+bool editNumber(const char* label, double& value, const char* format = "%.4g") {
+  ImGui::SetNextItemWidth(110);
+  return ImGui::InputDouble(label, &value, 0.0, 0.0, format,
+                            ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll) &&
+         std::isfinite(value);
+}
+
+void drawMeasuredTable(EditorSession& session, PanelState& state, const MeasuredElasticity& measured) {
+  static const char* kCoefficients[4] = {"c11", "c12", "c22", "c33"};
+  static const char* kRows[6] = {"zero strain", "0 deg", "22.5 deg", "45 deg", "67.5 deg", "90 deg"};
+  if (ImGui::BeginTable("elasticity", 5, ImGuiTableFlags_Borders | ImGuiTableFlags_SizingFixedFit)) {
+    ImGui::TableSetupColumn("N/m");
+    for (const char* c : kCoefficients) ImGui::TableSetupColumn(c);
+    ImGui::TableHeadersRow();
+    for (int row = -1; row < 5; ++row) {
+      const auto& values = row < 0 ? measured.zeroStrain : measured.directions[static_cast<std::size_t>(row)];
+      ImGui::TableNextRow();
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(kRows[row + 1]);
+      for (int col = 0; col < 4; ++col) {
+        ImGui::TableNextColumn();
+        double v = values[static_cast<std::size_t>(col)];
+        const std::string id = "##e" + std::to_string(row + 1) + std::to_string(col);
+        ImGui::SetNextItemWidth(80);
+        if (ImGui::InputDouble(id.c_str(), &v, 0.0, 0.0, "%.5g",
+                               ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll) &&
+            std::isfinite(v)) {
+          session.edit(withElasticityCoefficient(session.json(), session.scene(), state.cloth, row, col, v),
+                       std::string(kCoefficients[col]) + " at " + kRows[row + 1]);
+        }
+        recordWidget(state, "material/e" + std::to_string(row + 1) + std::to_string(col));
+      }
+    }
+    ImGui::EndTable();
+  }
+  // Each coefficient over the five measured directions (0 to 90 deg from the weft).
+  for (int col = 0; col < 4; ++col) {
+    std::array<float, 5> curve{};
+    for (int d = 0; d < 5; ++d) curve[static_cast<std::size_t>(d)] = static_cast<float>(measured.directions[static_cast<std::size_t>(d)][static_cast<std::size_t>(col)]);
+    const std::string overlay = std::string(kCoefficients[col]) + " over 0..90 deg";
+    ImGui::PlotLines(("##plot" + std::to_string(col)).c_str(), curve.data(), 5, 0, overlay.c_str(), FLT_MAX, FLT_MAX,
+                     ImVec2(260, 44));
+  }
+}
+
+void saveAsPreset(EditorSession& session, PanelState& state, const Material& material) {
+  const std::string name = state.newPresetName;
+  const bool safe = !name.empty() && name.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789-_.") == std::string::npos &&
+                    name.front() != '.';
+  if (!safe) {
+    session.status = "a preset name uses a-z, 0-9, '-', '_' and '.' only";
+    return;
+  }
+  const auto dirs = defaultSearchPaths(session.scene().file).materialDirs;
+  if (dirs.empty()) return;
+  const std::filesystem::path file = dirs.front() / (name + ".json");
+  if (std::filesystem::exists(file)) {
+    session.status = file.string() + " exists; choose another name (presets are not overwritten from here)";
+    return;
+  }
+  Material preset = material;
+  preset.name = name;
+  if (preset.source.empty()) preset.source = "made in Weft's editor";
+  try {
+    writeFileAtomically(file, materialToJson(preset).dump(2) + "\n");
+    session.edit(withMaterialPreset(session.json(), state.cloth, name), "material preset " + name);
+    session.status = "saved the material as " + file.string();
+  } catch (const std::exception& e) {
+    session.status = e.what();
+  }
+}
+
+}  // namespace
+
+void drawMaterialPanel(EditorSession& session, PanelState& state) {
+  if (!ImGui::Begin("Material")) {
+    ImGui::End();
+    return;
+  }
+  const Scene& scene = session.scene();
+  const ClothSpec& cloth = scene.cloths.at(static_cast<std::size_t>(state.cloth));
+  const Material& material = cloth.material;
+  ImGui::Text("Cloth: %s", cloth.name.c_str());
+  const std::string shown = material.name.empty() ? "(inline)" : material.name;
+  ImGui::SetNextItemWidth(220);
+  if (ImGui::BeginCombo("preset", shown.c_str())) {
+    for (const std::string& name : materialPresets(scene)) {
+      if (ImGui::Selectable(name.c_str(), name == material.name)) {
+        session.edit(withMaterialPreset(session.json(), state.cloth, name), "material " + name);
+      }
+    }
+    ImGui::EndCombo();
+  }
+  recordWidget(state, "material/preset");
+  if (!material.source.empty()) ImGui::TextWrapped("source: %s", material.source.c_str());
+
+  double density = material.areaDensity;
+  if (editNumber("area density (kg/m^2)", density) && density > 0.0) {
+    session.edit(withAreaDensity(session.json(), scene, state.cloth, density), "area density");
+  }
+  recordWidget(state, "material/density");
+  double stiffness = material.elasticity.stiffnessScale;
+  if (editNumber("stiffness scale", stiffness) && stiffness > 0.0) {
+    session.edit(withStiffnessScale(session.json(), scene, state.cloth, stiffness), "stiffness scale");
+  }
+  double bending = material.bending.stiffnessScale;
+  if (editNumber("bending scale", bending) && bending >= 0.0) {
+    session.edit(withBendingScale(session.json(), scene, state.cloth, bending), "bending scale");
+  }
+
+  bool isotropic = material.elasticity.model == ElasticitySettings::Model::Isotropic;
+  if (ImGui::Checkbox("isotropic (Young's modulus, Poisson ratio)", &isotropic)) {
+    if (isotropic) {
+      session.edit(withIsotropicElasticity(session.json(), scene, state.cloth, material.elasticity.youngModulus,
+                                           material.elasticity.poissonRatio),
+                   "isotropic elasticity");
+    } else {
+      session.status = "measured elasticity comes from a preset: choose one above";
+    }
+  }
+  if (isotropic) {
+    double young = material.elasticity.youngModulus;
+    double poisson = material.elasticity.poissonRatio;
+    if (editNumber("Young's modulus E*h (N/m)", young) && young > 0.0) {
+      session.edit(withIsotropicElasticity(session.json(), scene, state.cloth, young, poisson), "Young's modulus");
+    }
+    if (editNumber("Poisson ratio", poisson, "%.3f") && poisson >= 0.0 && poisson < 0.5) {
+      session.edit(withIsotropicElasticity(session.json(), scene, state.cloth, young, poisson), "Poisson ratio");
+    }
+  } else {
+    drawMeasuredTable(session, state, material.elasticity.measured);
+  }
+
+  ImGui::Separator();
+  ImGui::SetNextItemWidth(160);
+  ImGui::InputText("##presetname", state.newPresetName, sizeof state.newPresetName);
+  ImGui::SameLine();
+  if (ImGui::Button("Save as new preset")) saveAsPreset(session, state, material);
+  ImGui::End();
+}
+
+}  // namespace weft::editor

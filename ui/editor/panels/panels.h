@@ -1,0 +1,51 @@
+#pragma once
+// The editor's panels, one function each (one file each). A panel reads the session's parsed
+// scene and world, and changes only the scene document, through EditorSession::edit with the
+// pure edits of scene_edits.h: never the solver's internals.
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <string>
+
+#include <imgui.h>
+
+#include "editor/editor_session.h"
+#include "editor/sharp_tag_edits.h"
+
+namespace weft::editor {
+
+// Where each named widget was last drawn, for tests that drive the panels with simulated input
+// (ImGui 1.86 has no test engine). Panels record into it only when the state carries one.
+struct WidgetProbe {
+  std::map<std::string, ImVec4> rects;  // id -> (min x, min y, max x, max y) in pixels
+  ImVec2 centre(const std::string& id) const {
+    const ImVec4& r = rects.at(id);
+    return ImVec2(0.5f * (r.x + r.z), 0.5f * (r.y + r.w));
+  }
+};
+
+struct PanelState {
+  int cloth = 0;                 // the cloth the material, tear table and weft panels edit
+  WidgetProbe* probe = nullptr;  // tests only
+  char newPresetName[64] = "";   // the material panel's "save as preset" name
+  std::optional<ToolTagEditor> tool;  // the tool whose sharp tags the tools panel edits
+  int toolGeneration = -1;            // the world generation its tags were applied to
+  bool tagMode = false;               // clicks on the tool in the viewport toggle sharp tags
+  bool throwBallRequested = false;    // the app throws one from the camera this frame
+  std::filesystem::path openRequest;  // a scene the user chose to open (the editor asks about unsaved edits first)
+  WorldMetrics metrics;          // the solver panel's energy readout, and the step it is from
+  long long metricsStep = -1;
+};
+
+// Records the last drawn item under `id` when a probe is attached.
+void recordWidget(PanelState& state, const std::string& id);
+
+void drawScenePanel(EditorSession& session, PanelState& state);
+void drawMaterialPanel(EditorSession& session, PanelState& state);
+void drawTearTablePanel(EditorSession& session, PanelState& state);
+void drawWeftPanel(EditorSession& session, PanelState& state);
+void drawSolverPanel(EditorSession& session, PanelState& state);
+void drawPlaybackPanel(EditorSession& session, PanelState& state);
+void drawToolsPanel(EditorSession& session, PanelState& state);
+
+}  // namespace weft::editor

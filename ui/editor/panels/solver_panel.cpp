@@ -1,0 +1,100 @@
+// Solver: time step, substeps, integrator, linear solver and tolerance, with live readouts of the
+// step time per stage, solver iterations and residual, energy and the tear count.
+#include <cmath>
+#include <string>
+
+#include "editor/scene_edits.h"
+#include "panels.h"
+
+namespace weft::editor {
+
+namespace {
+
+const char* integratorName(IntegratorKind kind) {
+  switch (kind) {
+    case IntegratorKind::LinearizedBackwardEuler: return "linearized_backward_euler";
+    case IntegratorKind::Newton: return "newton";
+    case IntegratorKind::SymplecticEuler: return "symplectic_euler";
+  }
+  return "";
+}
+
+}  // namespace
+
+void drawSolverPanel(EditorSession& session, PanelState& state) {
+  if (!ImGui::Begin("Solver")) {
+    ImGui::End();
+    return;
+  }
+  const SolverSpec& solver = session.scene().solver;
+  double dt = solver.dt * 1000.0;
+  ImGui::SetNextItemWidth(120);
+  if (ImGui::InputDouble("time step (ms)", &dt, 0.0, 0.0, "%.4g",
+                         ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll)) {
+    if (std::isfinite(dt) && dt > 0.0) session.edit(withTimeStep(session.json(), dt / 1000.0), "time step");
+  }
+  recordWidget(state, "solver/dt");
+  int substeps = solver.substeps;
+  ImGui::SetNextItemWidth(120);
+  if (ImGui::InputInt("substeps", &substeps, 1, 1, ImGuiInputTextFlags_EnterReturnsTrue) && substeps >= 1) {
+    session.edit(withSubsteps(session.json(), substeps), "substeps");
+  }
+  const char* integrators[] = {"linearized_backward_euler", "newton", "symplectic_euler"};
+  const char* current = integratorName(solver.integrator);
+  ImGui::SetNextItemWidth(220);
+  if (ImGui::BeginCombo("integrator", current)) {
+    for (const char* name : integrators) {
+      if (ImGui::Selectable(name, std::string(name) == current)) {
+        nlohmann::json next = session.json();
+        next["solver"]["integrator"] = name;
+        session.edit(std::move(next), std::string("integrator ") + name);
+      }
+    }
+    ImGui::EndCombo();
+  }
+  const char* solverName = solver.linearSolver == LinearSolverKind::Cholmod ? "cholmod" : "cg";
+  ImGui::SetNextItemWidth(120);
+  if (ImGui::BeginCombo("linear solver", solverName)) {
+    for (const char* name : {"cg", "cholmod"}) {
+      if (ImGui::Selectable(name, std::string(name) == solverName)) {
+        nlohmann::json next = session.json();
+        next["solver"]["linear_solver"]["type"] = name;
+        session.edit(std::move(next), std::string("linear solver ") + name);
+      }
+    }
+    ImGui::EndCombo();
+  }
+  double tolerance = solver.linearTolerance;
+  ImGui::SetNextItemWidth(120);
+  if (ImGui::InputDouble("CG tolerance", &tolerance, 0.0, 0.0, "%.2g",
+                         ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll)) {
+    if (std::isfinite(tolerance) && tolerance > 0.0) session.edit(withLinearTolerance(session.json(), tolerance), "CG tolerance");
+  }
+
+  ImGui::Separator();
+  const World& world = session.world();
+  const double steps = std::max<long long>(world.stepCount(), 1);
+  ImGui::Text("mean step time by stage (ms):");
+  const StageProfile& profile = world.profile();
+  for (std::size_t i = 0; i < profile.names.size(); ++i) {
+    ImGui::Text("  %-22s %8.3f", profile.names[i].c_str(), profile.totalMs[i] / steps);
+  }
+  const SolverStats& stats = world.solverStats();
+  ImGui::Text("linear iterations per step %.1f, last residual %.2g", stats.linearIterations / steps,
+              stats.lastLinearResidual);
+  if (solver.integrator == IntegratorKind::Newton) {
+    ImGui::Text("Newton iterations per step %.1f, last residual %.2g m/s", stats.newtonIterations / steps,
+                stats.lastNewtonResidual);
+  }
+  ImGui::Text("tears %lld", world.tearStats().tears);
+  // Energies cost a force evaluation: refreshed every 30 steps, not every frame.
+  if (state.metricsStep < 0 || world.stepCount() < state.metricsStep || world.stepCount() - state.metricsStep >= 30) {
+    state.metrics = world.metrics();
+    state.metricsStep = world.stepCount();
+  }
+  ImGui::Text("energy: kinetic %.4g J, elastic %.4g J, gravity %.4g J", state.metrics.kineticEnergy,
+              state.metrics.elasticEnergy, state.metrics.gravityEnergy);
+  ImGui::End();
+}
+
+}  // namespace weft::editor

@@ -1,0 +1,145 @@
+// Tear table: the required strength per direction (thesis §3.1, Tables 3.1 and 4.1), the number
+// of evenly spaced directions, the thesis' presets, and a polar plot of the interpolated
+// strength over the full circle with the weft and warp axes of the cloth drawn on it.
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "editor/scene_edits.h"
+#include "panels.h"
+#include "scene/scene_json.h"
+#include "tearing/tear_table.h"
+
+namespace weft::editor {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+std::vector<std::string> tearTablePresets(const Scene& scene) {
+  std::vector<std::string> names;
+  for (const auto& dir : defaultSearchPaths(scene.file).tearTableDirs) {
+    std::error_code ec;
+    for (const auto& entry : std::filesystem::directory_iterator(dir, ec)) {
+      if (entry.path().extension() == ".json") names.push_back(entry.path().stem().string());
+    }
+  }
+  std::sort(names.begin(), names.end());
+  names.erase(std::unique(names.begin(), names.end()), names.end());
+  return names;
+}
+
+// ℜ(α) around the full circle, in material space (screen right = material x, up = material y),
+// the frame the woven texture is drawn in. α is measured from the warp V (tear_table.h), and V
+// lies 90° from the weft U, so the line at screen angle θ has α = θ - (weft angle + 90°).
+void drawPolarPlot(const TearTable& table, double weftAngleDeg, float size) {
+  ImDrawList* draw = ImGui::GetWindowDrawList();
+  const ImVec2 origin = ImGui::GetCursorScreenPos();
+  ImGui::InvisibleButton("polar", ImVec2(size, size));
+  const ImVec2 c(origin.x + 0.5f * size, origin.y + 0.5f * size);
+  const float radius = 0.45f * size;
+  double largest = 0.0;
+  for (double s : table.strength) largest = std::max(largest, s * table.unitNPerM);
+  if (largest <= 0.0) return;
+
+  draw->AddCircle(c, radius, IM_COL32(200, 200, 200, 255), 64);
+  draw->AddCircle(c, 0.5f * radius, IM_COL32(225, 225, 225, 255), 64);
+  // Material axes turned by the weft angle: U (weft) and V (warp), as the texture shows them.
+  const double weft = weftAngleDeg * kPi / 180.0;
+  auto axis = [&](double angle, ImU32 colour, const char* label) {
+    const ImVec2 tip(c.x + radius * static_cast<float>(std::cos(angle)), c.y - radius * static_cast<float>(std::sin(angle)));
+    const ImVec2 tail(c.x - radius * static_cast<float>(std::cos(angle)), c.y + radius * static_cast<float>(std::sin(angle)));
+    draw->AddLine(tail, tip, colour, 1.5f);
+    draw->AddText(ImVec2(tip.x + 3, tip.y - 7), colour, label);
+  };
+  axis(weft, IM_COL32(40, 90, 200, 255), "weft");
+  axis(weft + 0.5 * kPi, IM_COL32(30, 150, 60, 255), "warp");
+
+  // The curve: at screen angle θ, the line direction is θ; its angle from V is θ - (weft + 90°).
+  std::vector<ImVec2> points;
+  for (int i = 0; i <= 360; ++i) {
+    const double theta = i * kPi / 180.0;
+    const double alphaDeg = (theta - weft - 0.5 * kPi) * 180.0 / kPi;
+    const double r = radius * requiredStrength(table, alphaDeg) / largest;
+    points.emplace_back(c.x + static_cast<float>(r * std::cos(theta)), c.y - static_cast<float>(r * std::sin(theta)));
+  }
+  draw->AddPolyline(points.data(), static_cast<int>(points.size()), IM_COL32(200, 40, 40, 255), 0, 2.0f);
+}
+
+}  // namespace
+
+void drawTearTablePanel(EditorSession& session, PanelState& state) {
+  if (!ImGui::Begin("Tear table")) {
+    ImGui::End();
+    return;
+  }
+  const Scene& scene = session.scene();
+  const ClothSpec& cloth = scene.cloths.at(static_cast<std::size_t>(state.cloth));
+  ImGui::Text("Cloth: %s", cloth.name.c_str());
+
+  const std::string current = cloth.material.tearTable ? cloth.material.tearTable->name : std::string();
+  if (ImGui::BeginCombo("preset", current.empty() ? (cloth.material.tearTable ? "(edited)" : "(none: never tears)")
+                                                  : current.c_str())) {
+    if (ImGui::Selectable("(none: never tears)", !cloth.material.tearTable)) {
+      session.edit(withoutTearTable(session.json(), scene, state.cloth), "remove tear table");
+    }
+    for (const std::string& name : tearTablePresets(scene)) {
+      if (ImGui::Selectable(name.c_str(), name == current)) {
+        session.edit(withTearTablePreset(session.json(), state.cloth, name), "tear table " + name);
+      }
+    }
+    ImGui::EndCombo();
+  }
+  recordWidget(state, "tear/preset");
+
+  if (!cloth.material.tearTable) {
+    ImGui::TextWrapped("This cloth has no tear table and never tears.");
+    if (ImGui::Button("Add a uniform table")) {
+      session.edit(withInlineTearTable(session.json(), scene, state.cloth), "add tear table");
+    }
+    recordWidget(state, "tear/add");
+    ImGui::End();
+    return;
+  }
+
+  const TearTable& table = *cloth.material.tearTable;
+  // Directions stay evenly spaced over [0, 180): adding or removing one resamples the curve.
+  const int directions = static_cast<int>(table.strength.size());
+  ImGui::Text("%d directions, every %.4g deg", directions, 180.0 / directions);
+  ImGui::BeginDisabled(directions <= 1);
+  if (ImGui::Button(" - ")) {
+    session.edit(withTearDirections(session.json(), scene, state.cloth, directions - 1), "fewer tear directions");
+  }
+  recordWidget(state, "tear/fewer");
+  ImGui::EndDisabled();
+  ImGui::SameLine();
+  ImGui::BeginDisabled(directions >= 36);
+  if (ImGui::Button(" + ")) {
+    session.edit(withTearDirections(session.json(), scene, state.cloth, directions + 1), "more tear directions");
+  }
+  recordWidget(state, "tear/more");
+  ImGui::EndDisabled();
+  ImGui::Text("strength (x %.3g N/m), by direction from the warp:", table.unitNPerM);
+  for (int k = 0; k < static_cast<int>(table.strength.size()); ++k) {
+    double value = table.strength[static_cast<std::size_t>(k)];
+    const std::string label = std::to_string(static_cast<int>(std::lround(tableDirectionDeg(table, k)))) + " deg##tear" +
+                              std::to_string(k);
+    ImGui::SetNextItemWidth(120);
+    if (ImGui::InputDouble(label.c_str(), &value, 0.0, 0.0, "%.3g",
+                           ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll)) {
+      if (std::isfinite(value) && value > 0.0) {
+        session.edit(withTearStrength(session.json(), scene, state.cloth, k, value), "tear strength " + label);
+      } else {
+        session.status = "a tear strength must be a positive number";
+      }
+    }
+    recordWidget(state, "tear/" + std::to_string(k));
+  }
+  drawPolarPlot(table, cloth.weftAngleDeg, 220.0f);
+  recordWidget(state, "tear/plot");
+  ImGui::End();
+}
+
+}  // namespace weft::editor

@@ -1,0 +1,54 @@
+#pragma once
+// The edits the editor's panels make, as pure functions from a scene's JSON to the edited JSON.
+// The panels only decide *which* edit the user asked for; what it means for the file lives here,
+// where it is tested without a window. Every function takes the parsed scene too, so an edit of a
+// value that the file names by preset ("material": "royal-target") can first write the preset's
+// values inline and then change one of them: the file stays self-describing and the preset file
+// is never touched.
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "scene/scene.h"
+
+namespace weft::editor {
+
+// Weft angle of cloth `cloth` (degrees from material x).
+nlohmann::json withWeftAngle(const nlohmann::json& scene, int cloth, double degrees);
+
+// --- Tear table ------------------------------------------------------------------------------
+// The cloth's tear table inline (the parsed one, which may come from the material or a preset),
+// so its entries can be edited. A cloth without a table gets a uniform one of `defaultStrength`.
+nlohmann::json withInlineTearTable(const nlohmann::json& scene, const Scene& parsed, int cloth,
+                                   double defaultStrength = 10.0);
+// Entry k of the cloth's table set to `strength` (table units).
+nlohmann::json withTearStrength(const nlohmann::json& scene, const Scene& parsed, int cloth, int k, double strength);
+// The table resampled to `directions` evenly spaced directions over [0, 180), each value the old
+// table's interpolated strength there (adding or removing directions keeps the curve's shape).
+nlohmann::json withTearDirections(const nlohmann::json& scene, const Scene& parsed, int cloth, int directions);
+// A tear table preset by name (presets/tear_tables/NAME.json), or none: the cloth never tears.
+nlohmann::json withTearTablePreset(const nlohmann::json& scene, int cloth, const std::string& name);
+nlohmann::json withoutTearTable(const nlohmann::json& scene, const Scene& parsed, int cloth);
+
+// --- Material --------------------------------------------------------------------------------
+nlohmann::json withMaterialPreset(const nlohmann::json& scene, int cloth, const std::string& name);
+// The cloth's resolved material inline, under its own name, so its numbers can be edited. The
+// material's tear table moves to the cloth's "tear_table" if the cloth has none of its own.
+nlohmann::json withInlineMaterial(const nlohmann::json& scene, const Scene& parsed, int cloth);
+nlohmann::json withAreaDensity(const nlohmann::json& scene, const Scene& parsed, int cloth, double kgPerM2);
+nlohmann::json withBendingScale(const nlohmann::json& scene, const Scene& parsed, int cloth, double scale);
+nlohmann::json withStiffnessScale(const nlohmann::json& scene, const Scene& parsed, int cloth, double scale);
+// One measured coefficient: row -1 is the zero-strain row, rows 0.. the directions at the
+// reference stretch; column 0..3 is c11, c12, c22, c33 (N/m).
+nlohmann::json withElasticityCoefficient(const nlohmann::json& scene, const Scene& parsed, int cloth, int row,
+                                         int column, double value);
+// An isotropic membrane (Young's modulus E*h in N/m, Poisson ratio), replacing measured data.
+nlohmann::json withIsotropicElasticity(const nlohmann::json& scene, const Scene& parsed, int cloth,
+                                       double youngModulus, double poissonRatio);
+
+// --- Solver and playback ---------------------------------------------------------------------
+nlohmann::json withTimeStep(const nlohmann::json& scene, double dt);
+nlohmann::json withSubsteps(const nlohmann::json& scene, int substeps);
+nlohmann::json withLinearTolerance(const nlohmann::json& scene, double tolerance);
+
+}  // namespace weft::editor

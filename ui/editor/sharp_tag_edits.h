@@ -1,0 +1,56 @@
+#pragma once
+// Sharp tags of a tool, edited in the editor (thesis Figure 3.3: the sharp parts of a tool cut).
+// The tags live in a JSON file beside the tool's mesh (core/rigid/sharp_tags.h); the editor keeps
+// that file as its own document with its own undo history, and applies each change to the running
+// world at once, so the red highlights and the cutting records follow the clicks.
+#include <array>
+#include <filesystem>
+#include <optional>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "editor/editor_session.h"
+#include "editor/json_document.h"
+#include "rigid/sharp_tags.h"
+
+namespace weft::editor {
+
+// Pure edits, in canonical form (sorted, no repeats; an edge as {a, b} with a < b).
+SharpTags withVertexToggled(SharpTags tags, int vertex);
+SharpTags withEdgeToggled(SharpTags tags, std::array<int, 2> edge);
+nlohmann::json sharpTagsJson(const SharpTags& tags);     // the file's format
+SharpTags sharpTagsFromJson(const nlohmann::json& json);  // of what sharpTagsJson wrote
+
+// The tags file of a scene obstacle: its "sharp_tags" file, or NAME.sharp.json beside its mesh;
+// none for a generated shape (sphere, box...), which has no file to keep tags beside.
+std::optional<std::filesystem::path> sharpTagsFileOf(const ObstacleSpec& spec);
+
+class ToolTagEditor {
+ public:
+  // The tags of obstacle `obstacle` of the session's scene, read from its tags file (empty when
+  // the file does not exist yet). Throws std::invalid_argument for an obstacle without a mesh file.
+  ToolTagEditor(const EditorSession& session, int obstacle);
+
+  int obstacle() const { return obstacle_; }
+  SharpTags tags() const { return sharpTagsFromJson(document_.json()); }
+  const JsonDocument& document() const { return document_; }
+
+  void toggleVertex(EditorSession& session, int vertex);
+  void toggleEdge(EditorSession& session, std::array<int, 2> edge);
+  void undo(EditorSession& session);
+  void redo(EditorSession& session);
+  void save() { document_.save(); }  // atomic, FILE.bak kept
+  // After the world was rebuilt (a reset): its obstacle has the file's tags again; put the
+  // document's (possibly unsaved) ones back.
+  void reapply(EditorSession& session) const { applyToWorld(session); }
+
+ private:
+  void commit(EditorSession& session, const SharpTags& tags, const std::string& label);
+  void applyToWorld(EditorSession& session) const;
+
+  int obstacle_;
+  JsonDocument document_;
+};
+
+}  // namespace weft::editor

@@ -1,0 +1,55 @@
+#pragma once
+// What the mouse does in the editor's viewport, besides the orbit camera: grab a cloth vertex and
+// drag it (a spring to the cursor, so a user can tear cloth by hand), drag a kinematic tool, tag
+// a tool's vertex or edge sharp, throw a ball from the camera. No ImGui and no GL: it turns mouse
+// positions (window pixels) into rays and calls the World's interaction API, so tests drive it.
+//
+// Left press on a cloth grabs its nearest vertex; on a kinematic tool with Alt held, drags the
+// tool; in tag mode, on a tool, toggles the nearest vertex (or else edge) sharp. A press on
+// nothing leaves the mouse to the orbit camera.
+#include <optional>
+
+#include "editor/editor_session.h"
+#include "editor/sharp_tag_edits.h"
+#include "orbit_camera.h"
+#include "window_input.h"
+
+namespace weft::editor {
+
+struct ViewportSettings {
+  double grabStiffness = 2000.0;       // N/m: at 10 cm off, 200 N, enough to tear the thesis' cloths
+  double ballSpeed = 12.0;             // m/s, thrown along the view ray
+  double ballRadius = 0.08;            // m
+  double ballMass = 1.0;               // kg
+  double tagTolerancePixels = 8.0;     // how near a vertex or edge a click must be to tag it
+};
+
+class ViewportInteraction {
+ public:
+  explicit ViewportInteraction(ViewportSettings settings = {}) : settings_(settings) {}
+
+  // Handles a frame's mouse state in a viewport of width x height pixels. Returns true when the
+  // mouse is taken (grabbing, dragging a tool, tagging): the orbit camera must not use it.
+  // `tagMode`: clicks on a tool toggle sharp tags in `tags` (the document of that tool's tags).
+  bool update(EditorSession& session, const ui::OrbitCamera& camera, const ui::MouseState& mouse, bool altHeld,
+              int width, int height, ToolTagEditor* tags = nullptr);
+
+  // Throws a ball from the eye through the point (x, y) of the viewport.
+  void throwBall(EditorSession& session, const ui::OrbitCamera& camera, double x, double y, int width, int height) const;
+
+  bool grabbing() const { return mode_ == Mode::Grab; }
+
+ private:
+  enum class Mode { Idle, Grab, DragTool, Orbit };
+  // Where the cursor's ray meets the plane through `anchor` facing the camera.
+  static Vec3 onDragPlane(const ui::OrbitCamera& camera, const Vec3& anchor, const Vec3& origin, const Vec3& dir);
+
+  ViewportSettings settings_;
+  Mode mode_ = Mode::Idle;
+  bool wasDown_ = false;
+  Vec3 anchor_ = Vec3::Zero();     // grabbed point or tool point under the cursor at the press
+  Vec3 toolOffset_ = Vec3::Zero(); // tool position minus anchor
+  int tool_ = -1;
+};
+
+}  // namespace weft::editor
