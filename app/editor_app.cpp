@@ -14,6 +14,7 @@
 #include "editor/editor_session.h"
 #include "editor/editor_ui.h"
 #include "editor/editor_viewport.h"
+#include "editor/headless_recorder.h"
 #include "editor/viewport_interaction.h"
 #include "glfw_window.h"
 #include "orbit_controls.h"
@@ -128,6 +129,9 @@ int runEditor(const EditorOptions& options) {
   std::unique_ptr<editor::EditorSession> session = openSession(options);
   editor::Autosave autosave(options.autosaveDir);
   editor::EditorUi ui;
+  // Recording runs this same binary headless (`weft run --png --video`) on the edited scene.
+  editor::HeadlessRecorder recorder(std::filesystem::read_symlink("/proc/self/exe"));
+  ui.panels.recorder = &recorder;
   ui.recovery = autosave.find(std::filesystem::absolute(options.scene));
 
   ui::WindowSettings settings;

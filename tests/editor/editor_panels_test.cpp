@@ -32,7 +32,7 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 
 constexpr double kPi = 3.14159265358979323846;
-constexpr int kWidth = 1280;
+constexpr int kWidth = 1440;
 constexpr int kHeight = 900;
 
 fs::path copyScene(const test::TempDir& dir, const std::string& preset, int resolution) {

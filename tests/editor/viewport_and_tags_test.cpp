@@ -5,6 +5,8 @@
 
 #include <filesystem>
 #include <fstream>
+#include <algorithm>
+#include <cmath>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -167,6 +169,87 @@ TEST(ToolTags, TogglingTwiceRestoresAndAGeneratedShapeHasNoTagsFile) {
   ObstacleSpec ball;
   ball.shape.kind = ShapeKind::Sphere;
   EXPECT_FALSE(sharpTagsFileOf(ball));
+}
+
+struct ImVec2Like {
+  double x = 0, y = 0;
+};
+
+// Where a world point appears in a width x height view of the camera (pixels from the top-left).
+ImVec2Like project(const ui::OrbitCamera& camera, const Vec3& p, int width, int height) {
+  const Eigen::Vector4f clip = camera.projection(double(width) / height) * camera.view() *
+                               Eigen::Vector4f(float(p.x()), float(p.y()), float(p.z()), 1.0f);
+  return {(clip.x() / clip.w() + 1.0) * 0.5 * width, (1.0 - clip.y() / clip.w()) * 0.5 * height};
+}
+
+TEST(ToolTags, AClickOnAToolEdgeInTagModeTogglesItSharp) {
+  SwordScene s;
+  ToolTagEditor tags(*s.session, 0);
+  const World& world = s.session->world();
+  const Obstacle& sword = world.obstacle(0);
+  const std::vector<Vec3> x = world.obstacleVertices(0);
+  // A camera looking at the middle of a not-yet-sharp edge from 1 m along its first face's normal.
+  int edgeId = -1;
+  for (std::size_t e = 0; e < sword.sharpEdge.size() && edgeId < 0; ++e) {
+    if (!sword.sharpEdge[e]) edgeId = static_cast<int>(e);
+  }
+  ASSERT_GE(edgeId, 0);
+  const auto edge = sword.topology.edges[static_cast<std::size_t>(edgeId)];
+  const Vec3 middle = 0.5 * (x[edge[0]] + x[edge[1]]);
+  ui::OrbitCamera camera;
+  camera.target = middle;
+  camera.distance = 0.5;
+  camera.nearPlane = 0.01;
+  // Look from outside the tool: from the side its centre is not on.
+  const Vec3 outward = (middle - sword.body.state.position).normalized();
+  camera.yawDeg = std::atan2(outward.x(), outward.z()) * 180.0 / 3.14159265358979323846;
+  camera.pitchDeg = std::asin(std::clamp(outward.y(), -0.99, 0.99)) * 180.0 / 3.14159265358979323846;
+  const ImVec2Like at = project(camera, middle, 800, 600);
+  ASSERT_NEAR(at.x, 400.0, 1.0);
+  ASSERT_NEAR(at.y, 300.0, 1.0);
+
+  ViewportInteraction interaction;
+  ui::MouseState mouse;
+  mouse.x = at.x;
+  mouse.y = at.y;
+  interaction.update(*s.session, camera, mouse, false, 800, 600, &tags);
+  mouse.left = true;
+  EXPECT_TRUE(interaction.update(*s.session, camera, mouse, false, 800, 600, &tags));
+  const SharpTags after = tags.tags();
+  const bool edgeTagged = std::find(after.edges.begin(), after.edges.end(), edge) != after.edges.end();
+  const bool endTagged = std::find(after.vertices.begin(), after.vertices.end(), edge[0]) != after.vertices.end() ||
+                         std::find(after.vertices.begin(), after.vertices.end(), edge[1]) != after.vertices.end();
+  EXPECT_TRUE(edgeTagged || endTagged) << "the click lands on the edge (or, on a short edge, its nearer end)";
+  EXPECT_TRUE(tags.document().dirty());
+}
+
+// Frames until the first tear (or `frames` when none), pulling the hanging sheet's middle down
+// the screen by hand when `pull`.
+int framesToFirstTear(bool pull, int frames) {
+  FacingSheet s;
+  json scene = s.session->json();
+  scene["cloths"][0]["tear_table"] =
+      json::parse(R"({"directions_deg": [0, 45, 90, 135], "strength": [40, 40, 40, 40], "unit_n_per_m": 1})");
+  EXPECT_TRUE(s.session->edit(scene, "tear table").accepted) << s.session->status;
+  ViewportInteraction interaction;
+  ui::MouseState mouse;
+  mouse.x = 400;
+  mouse.y = 300;
+  mouse.left = pull;
+  interaction.update(*s.session, s.camera, mouse, false, 800, 600);
+  if (pull) EXPECT_TRUE(s.session->world().grabState());
+  for (int frame = 0; frame < frames; ++frame) {
+    if (s.session->world().tearStats().tears > 0) return frame;
+    mouse.y = 300 + 8 * frame;  // down the screen, much further than the sheet can stretch
+    interaction.update(*s.session, s.camera, mouse, false, 800, 600);
+    s.session->advanceFrame();
+  }
+  return frames;
+}
+
+TEST(ViewportInteraction, PullingAClothByHandTearsIt) {
+  EXPECT_EQ(framesToFirstTear(false, 40), 40) << "left alone the sheet holds";
+  EXPECT_LT(framesToFirstTear(true, 40), 40) << "a hard pull tears it";
 }
 
 }  // namespace

@@ -119,9 +119,9 @@ void drawEditorUi(EditorSession& session, EditorUi& ui) {
   const float w = ImGui::GetIO().DisplaySize.x;
   placeNext(8, 8, 300, 300);
   drawScenePanel(session, ui.panels);
-  placeNext(8, 316, 300, 150);
+  placeNext(8, 316, 300, 170);
   drawPlaybackPanel(session, ui.panels);
-  placeNext(8, 474, 300, 260);
+  placeNext(8, 494, 300, 240);
   drawSolverPanel(session, ui.panels);
   placeNext(8, 742, 300, 130);
   drawToolsPanel(session, ui.panels);

@@ -173,6 +173,91 @@ json withIsotropicElasticity(const json& scene, const Scene& parsed, int cloth, 
   return out;
 }
 
+namespace {
+
+// `base`, or base2, base3... whichever no element of `array` is named yet.
+std::string uniqueName(const json& array, const std::string& base) {
+  auto taken = [&](const std::string& name) {
+    for (const json& item : array) {
+      if (item.value("name", "") == name) return true;
+    }
+    return false;
+  };
+  std::string name = base;
+  for (int k = 2; taken(name); ++k) name = base + std::to_string(k);
+  return name;
+}
+
+json vec3Json(const Vec3& v) { return json::array({v.x(), v.y(), v.z()}); }
+
+}  // namespace
+
+json withObstacleAdded(const json& scene, const std::string& shape, const Vec3& position, double size) {
+  json out = scene;
+  if (!out.contains("obstacles")) out["obstacles"] = json::array();
+  json obstacle;
+  obstacle["name"] = uniqueName(out["obstacles"], shape);
+  if (shape == "sphere") {
+    obstacle["shape"] = json{{"sphere", {{"radius", size}}}};
+  } else if (shape == "box") {
+    obstacle["shape"] = json{{"box", {{"half_extents", vec3Json(Vec3::Constant(size))}}}};
+  } else {
+    throw std::invalid_argument("cannot add a \"" + shape + "\" from the editor; expected sphere or box");
+  }
+  obstacle["placement"] = json{{"translate", vec3Json(position)}};
+  out["obstacles"].push_back(obstacle);
+  return out;
+}
+
+json withoutObstacle(const json& scene, int obstacle) {
+  json out = scene;
+  json& obstacles = out.at("obstacles");
+  if (obstacle < 0 || obstacle >= static_cast<int>(obstacles.size())) throw std::out_of_range("no such obstacle");
+  obstacles.erase(static_cast<std::size_t>(obstacle));
+  if (obstacles.empty()) out.erase("obstacles");
+  return out;
+}
+
+json withClothDuplicated(const json& scene, int cloth, const Vec3& offset) {
+  json out = scene;
+  json copy = clothJson(out, cloth);
+  copy["name"] = uniqueName(out["cloths"], copy.value("name", "cloth"));
+  Vec3 translate = Vec3::Zero();
+  if (copy.contains("placement") && copy["placement"].contains("translate")) {
+    const json& t = copy["placement"]["translate"];
+    translate = Vec3(t.at(0).get<double>(), t.at(1).get<double>(), t.at(2).get<double>());
+  }
+  copy["placement"]["translate"] = vec3Json(translate + offset);
+  out["cloths"].push_back(copy);
+  return out;
+}
+
+json withoutCloth(const json& scene, int cloth) {
+  json out = scene;
+  clothJson(out, cloth);  // range check
+  if (out["cloths"].size() < 2) throw std::invalid_argument("a scene keeps at least one cloth");
+  out["cloths"].erase(static_cast<std::size_t>(cloth));
+  return out;
+}
+
+json withGravity(const json& scene, const Vec3& gravity) {
+  json out = scene;
+  out["forces"]["gravity"] = vec3Json(gravity);
+  return out;
+}
+
+json withWind(const json& scene, const Vec3& velocity) {
+  json out = scene;
+  out["forces"]["wind"]["velocity"] = vec3Json(velocity);
+  return out;
+}
+
+json withMassDamping(const json& scene, double perSecond) {
+  json out = scene;
+  out["forces"]["damping"]["mass"] = perSecond;
+  return out;
+}
+
 json withTimeStep(const json& scene, double dt) {
   json out = scene;
   out["solver"]["dt"] = dt;

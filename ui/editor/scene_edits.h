@@ -46,6 +46,19 @@ nlohmann::json withElasticityCoefficient(const nlohmann::json& scene, const Scen
 nlohmann::json withIsotropicElasticity(const nlohmann::json& scene, const Scene& parsed, int cloth,
                                        double youngModulus, double poissonRatio);
 
+// --- Scene objects and forces ---------------------------------------------------------------
+// A static obstacle of a generated shape ("sphere" or "box", `size` its radius or half extent,
+// m) at `position`, named uniquely from `shape`.
+nlohmann::json withObstacleAdded(const nlohmann::json& scene, const std::string& shape, const Vec3& position,
+                                 double size);
+nlohmann::json withoutObstacle(const nlohmann::json& scene, int obstacle);
+// A copy of cloth `cloth` moved by `offset` (m), named uniquely.
+nlohmann::json withClothDuplicated(const nlohmann::json& scene, int cloth, const Vec3& offset);
+nlohmann::json withoutCloth(const nlohmann::json& scene, int cloth);  // the last cloth cannot go
+nlohmann::json withGravity(const nlohmann::json& scene, const Vec3& gravity);
+nlohmann::json withWind(const nlohmann::json& scene, const Vec3& velocity);
+nlohmann::json withMassDamping(const nlohmann::json& scene, double perSecond);
+
 // --- Solver and playback ---------------------------------------------------------------------
 nlohmann::json withTimeStep(const nlohmann::json& scene, double dt);
 nlohmann::json withSubsteps(const nlohmann::json& scene, int substeps);

@@ -75,7 +75,16 @@ JsonDocument openTags(const EditorSession& session, int obstacle) {
 }  // namespace
 
 ToolTagEditor::ToolTagEditor(const EditorSession& session, int obstacle)
-    : obstacle_(obstacle), document_(openTags(session, obstacle)) {}
+    : obstacle_(obstacle), document_(openTags(session, obstacle)) {
+  name_ = session.scene().obstacles[static_cast<std::size_t>(obstacle)].name;
+}
+
+bool ToolTagEditor::reapply(EditorSession& session) const {
+  const World& world = session.world();
+  if (obstacle_ >= world.obstacleCount() || world.obstacle(obstacle_).name != name_) return false;
+  applyToWorld(session);
+  return true;
+}
 
 void ToolTagEditor::toggleVertex(EditorSession& session, int vertex) {
   commit(session, withVertexToggled(tags(), vertex), "toggle sharp vertex " + std::to_string(vertex));

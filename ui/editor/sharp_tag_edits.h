@@ -41,15 +41,17 @@ class ToolTagEditor {
   void undo(EditorSession& session);
   void redo(EditorSession& session);
   void save() { document_.save(); }  // atomic, FILE.bak kept
-  // After the world was rebuilt (a reset): its obstacle has the file's tags again; put the
-  // document's (possibly unsaved) ones back.
-  void reapply(EditorSession& session) const { applyToWorld(session); }
+  // After the world was rebuilt (a reset): its obstacle has the file's tags again; puts the
+  // document's (possibly unsaved) ones back. False when the obstacle at this index is no longer
+  // the tool (it was removed from the scene): nothing is applied.
+  bool reapply(EditorSession& session) const;
 
  private:
   void commit(EditorSession& session, const SharpTags& tags, const std::string& label);
   void applyToWorld(EditorSession& session) const;
 
   int obstacle_;
+  std::string name_;  // the obstacle's name, to notice it gone after a reset
   JsonDocument document_;
 };
 

@@ -10,6 +10,7 @@
 #include <imgui.h>
 
 #include "editor/editor_session.h"
+#include "editor/headless_recorder.h"
 #include "editor/sharp_tag_edits.h"
 
 namespace weft::editor {
@@ -26,12 +27,17 @@ struct WidgetProbe {
 
 struct PanelState {
   int cloth = 0;                 // the cloth the material, tear table and weft panels edit
+  int obstacle = -1;             // the obstacle selected in the scene panel (-1: none)
+  char saveAsPath[256] = "";     // the scene panel's "save as" file
   WidgetProbe* probe = nullptr;  // tests only
   char newPresetName[64] = "";   // the material panel's "save as preset" name
   std::optional<ToolTagEditor> tool;  // the tool whose sharp tags the tools panel edits
   int toolGeneration = -1;            // the world generation its tags were applied to
   bool tagMode = false;               // clicks on the tool in the viewport toggle sharp tags
   bool throwBallRequested = false;    // the app throws one from the camera this frame
+  HeadlessRecorder* recorder = nullptr;  // playback's "record" (owned by the app; none: no recording)
+  int recordFrames = 120;
+  bool recordVideo = true;
   std::filesystem::path openRequest;  // a scene the user chose to open (the editor asks about unsaved edits first)
   WorldMetrics metrics;          // the solver panel's energy readout, and the step it is from
   long long metricsStep = -1;

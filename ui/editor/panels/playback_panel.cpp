@@ -1,4 +1,8 @@
 // Playback: play, pause, single step, reset and speed.
+#include <algorithm>
+#include <filesystem>
+#include <string>
+
 #include "panels.h"
 
 namespace weft::editor {
@@ -24,6 +28,23 @@ void drawPlaybackPanel(EditorSession& session, PanelState& state) {
   if (ImGui::SliderFloat("speed", &speed, 0.05f, 4.0f, "%.2fx", ImGuiSliderFlags_Logarithmic)) session.speed = speed;
   ImGui::Text("t = %.3f s   step %lld%s", session.world().time(), session.world().stepCount(),
               session.stopped() ? "   STOPPED (non-finite)" : "");
+  if (state.recorder != nullptr) {
+    ImGui::Separator();
+    ImGui::SetNextItemWidth(90);
+    ImGui::InputInt("frames", &state.recordFrames, 30, 120);
+    state.recordFrames = std::max(state.recordFrames, 1);
+    ImGui::SameLine();
+    ImGui::Checkbox("video", &state.recordVideo);
+    ImGui::BeginDisabled(state.recorder->running());
+    if (ImGui::Button(state.recorder->running() ? "Recording..." : "Record headless")) {
+      const std::filesystem::path out = std::filesystem::path("out") / (session.scene().name + "-recording");
+      state.recorder->start(session.json(), session.document().file(), out, state.recordFrames, state.recordVideo);
+    }
+    ImGui::EndDisabled();
+    recordWidget(state, "play/record");
+    const std::string message = state.recorder->lastMessage();
+    if (!message.empty()) ImGui::TextWrapped("%s", message.c_str());
+  }
   ImGui::End();
 }
 

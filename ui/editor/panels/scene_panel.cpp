@@ -1,10 +1,13 @@
 // Scene: the cloths (pick the one the other panels edit), obstacles and tools, the stages the
 // scene runs, and the document's save, undo and redo.
 #include <algorithm>
+#include <cmath>
+#include <functional>
 #include <filesystem>
 #include <string>
 #include <vector>
 
+#include "editor/scene_edits.h"
 #include "panels.h"
 
 namespace weft::editor {
@@ -29,6 +32,97 @@ std::vector<std::filesystem::path> scenesBeside(const std::filesystem::path& fil
   return scenes;
 }
 
+// Three numbers edited together (a vector), applied when Enter is pressed in any of them.
+bool editVector(const char* label, Vec3& value) {
+  double v[3] = {value.x(), value.y(), value.z()};
+  ImGui::SetNextItemWidth(200);
+  if (!ImGui::InputScalarN(label, ImGuiDataType_Double, v, 3, nullptr, nullptr, "%.3g",
+                           ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll)) {
+    return false;
+  }
+  for (double x : v) {
+    if (!std::isfinite(x)) return false;
+  }
+  value = Vec3(v[0], v[1], v[2]);
+  return true;
+}
+
+// Scene edits that can refuse (the last cloth, an unknown shape) report why in the status bar.
+void tryEdit(EditorSession& session, const std::function<nlohmann::json()>& makeEdit, const std::string& label) {
+  try {
+    session.edit(makeEdit(), label);
+  } catch (const std::exception& e) {
+    session.status = label + ": " + e.what();
+  }
+}
+
+void drawObjects(EditorSession& session, PanelState& state) {
+  const Scene& scene = session.scene();
+  ImGui::Separator();
+  ImGui::TextUnformatted("Cloths");
+  for (int i = 0; i < static_cast<int>(scene.cloths.size()); ++i) {
+    const ClothSpec& cloth = scene.cloths[static_cast<std::size_t>(i)];
+    const std::string label = cloth.name + "  (" + (cloth.materialName.empty() ? cloth.material.name : cloth.materialName) + ")";
+    if (ImGui::Selectable(label.c_str(), state.cloth == i)) state.cloth = i;
+    recordWidget(state, "scene/cloth" + std::to_string(i));
+  }
+  if (ImGui::SmallButton("Duplicate cloth")) {
+    tryEdit(session, [&] { return withClothDuplicated(session.json(), state.cloth, Vec3(0.0, 0.0, 0.3)); },
+            "duplicate cloth");
+  }
+  ImGui::SameLine();
+  ImGui::BeginDisabled(scene.cloths.size() < 2);
+  if (ImGui::SmallButton("Remove cloth")) {
+    const int removed = state.cloth;
+    state.cloth = 0;
+    tryEdit(session, [&] { return withoutCloth(session.json(), removed); }, "remove cloth");
+  }
+  ImGui::EndDisabled();
+
+  ImGui::Separator();
+  ImGui::TextUnformatted("Obstacles and tools");
+  if (state.obstacle >= static_cast<int>(scene.obstacles.size())) state.obstacle = -1;
+  for (int i = 0; i < static_cast<int>(scene.obstacles.size()); ++i) {
+    if (ImGui::Selectable(scene.obstacles[static_cast<std::size_t>(i)].name.c_str(), state.obstacle == i)) state.obstacle = i;
+  }
+  // New obstacles appear beside the first cloth's first vertex, where they can be seen.
+  const Vec3 at = session.world().cloth(0).x.empty() ? Vec3::Zero() : session.world().cloth(0).x.front();
+  if (ImGui::SmallButton("Add sphere")) {
+    tryEdit(session, [&] { return withObstacleAdded(session.json(), "sphere", at + Vec3(0.3, -0.3, 0.3), 0.1); },
+            "add sphere");
+  }
+  ImGui::SameLine();
+  if (ImGui::SmallButton("Add box")) {
+    tryEdit(session, [&] { return withObstacleAdded(session.json(), "box", at + Vec3(0.3, -0.3, 0.3), 0.1); }, "add box");
+  }
+  ImGui::SameLine();
+  ImGui::BeginDisabled(state.obstacle < 0);
+  if (ImGui::SmallButton("Remove")) {
+    const int removed = state.obstacle;
+    state.obstacle = -1;
+    if (state.tool && state.tool->obstacle() == removed) state.tool.reset();
+    tryEdit(session, [&] { return withoutObstacle(session.json(), removed); }, "remove obstacle");
+  }
+  ImGui::EndDisabled();
+}
+
+void drawForces(EditorSession& session) {
+  const ForcesSpec& forces = session.scene().forces;
+  ImGui::Separator();
+  ImGui::TextUnformatted("Forces");
+  Vec3 gravity = forces.gravity;
+  if (editVector("gravity (m/s^2)", gravity)) session.edit(withGravity(session.json(), gravity), "gravity");
+  Vec3 wind = forces.wind.velocity;
+  if (editVector("wind (m/s)", wind)) session.edit(withWind(session.json(), wind), "wind");
+  double damping = forces.damping.mass;
+  ImGui::SetNextItemWidth(100);
+  if (ImGui::InputDouble("mass damping (1/s)", &damping, 0.0, 0.0, "%.3g",
+                         ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll) &&
+      std::isfinite(damping) && damping >= 0.0) {
+    session.edit(withMassDamping(session.json(), damping), "mass damping");
+  }
+}
+
 }  // namespace
 
 void drawScenePanel(EditorSession& session, PanelState& state) {
@@ -36,7 +130,6 @@ void drawScenePanel(EditorSession& session, PanelState& state) {
     ImGui::End();
     return;
   }
-  const Scene& scene = session.scene();
   ImGui::Text("%s%s", session.document().file().filename().string().c_str(), session.dirty() ? " *" : "");
   if (ImGui::Button("Save")) {
     try {
@@ -66,19 +159,18 @@ void drawScenePanel(EditorSession& session, PanelState& state) {
   }
   recordWidget(state, "scene/open");
 
-  ImGui::Separator();
-  ImGui::TextUnformatted("Cloths");
-  for (int i = 0; i < static_cast<int>(scene.cloths.size()); ++i) {
-    const ClothSpec& cloth = scene.cloths[static_cast<std::size_t>(i)];
-    const std::string label = cloth.name + "  (" + (cloth.materialName.empty() ? cloth.material.name : cloth.materialName) + ")";
-    if (ImGui::Selectable(label.c_str(), state.cloth == i)) state.cloth = i;
-    recordWidget(state, "scene/cloth" + std::to_string(i));
+  ImGui::SetNextItemWidth(170);
+  ImGui::InputTextWithHint("##saveas", "other/scene.json", state.saveAsPath, sizeof state.saveAsPath);
+  ImGui::SameLine();
+  if (ImGui::Button("Save as") && state.saveAsPath[0] != '\0') {
+    try {
+      session.saveAs(std::filesystem::absolute(state.saveAsPath));
+    } catch (const std::exception& e) {
+      session.status = e.what();
+    }
   }
-  if (!scene.obstacles.empty()) {
-    ImGui::Separator();
-  ImGui::TextUnformatted("Obstacles and tools");
-    for (const ObstacleSpec& o : scene.obstacles) ImGui::BulletText("%s", o.name.c_str());
-  }
+  drawObjects(session, state);
+  drawForces(session);
 
   ImGui::Separator();
   ImGui::TextUnformatted("Stages");

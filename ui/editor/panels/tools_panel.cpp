@@ -13,6 +13,14 @@ void drawToolsPanel(EditorSession& session, PanelState& state) {
     return;
   }
   const auto& obstacles = session.scene().obstacles;
+  if (session.resetPending()) {
+    // The document's obstacles and the running world's may differ until the reset; the tags
+    // being edited are kept.
+    state.tagMode = false;
+    ImGui::TextWrapped("Reset (Playback panel) to apply the scene's edits before tagging tools.");
+    ImGui::End();
+    return;
+  }
   if (state.tool && state.tool->obstacle() >= static_cast<int>(obstacles.size())) state.tool.reset();
   const std::string current = state.tool ? obstacles[static_cast<std::size_t>(state.tool->obstacle())].name : "(none)";
   ImGui::SetNextItemWidth(200);
@@ -35,7 +43,12 @@ void drawToolsPanel(EditorSession& session, PanelState& state) {
 
   if (state.tool) {
     if (state.toolGeneration != session.worldGeneration()) {
-      state.tool->reapply(session);
+      if (!state.tool->reapply(session)) {
+        session.status = "the tool being tagged is gone from the scene; its unsaved tags were dropped";
+        state.tool.reset();
+        ImGui::End();
+        return;
+      }
       state.toolGeneration = session.worldGeneration();
     }
     const SharpTags tags = state.tool->tags();
