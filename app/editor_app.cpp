@@ -6,6 +6,7 @@
 #include <imgui_impl_opengl3.h>
 
 #include <chrono>
+#include <cstdint>
 #include <cstdio>
 #include <iostream>
 #include <memory>
@@ -161,6 +162,9 @@ int runEditor(const EditorOptions& options) {
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
   };
 
+  // Edits made from the command line (--set) are the session's starting point: they are unsaved,
+  // but only the user's own edits on top of them are worth offering back after a crash.
+  std::uint64_t startRevision = session->document().history().revision();
   Clock::time_point lastAutosave = Clock::now();
   int displayed = 0;
   while (ui.quit != editor::QuitPrompt::Confirmed) {
@@ -179,6 +183,7 @@ int runEditor(const EditorOptions& options) {
 
     if (ui.recoveryChoice == editor::RecoveryChoice::Recover && ui.recovery) {
       session = std::make_unique<editor::EditorSession>(options.scene, ui.recovery->document);
+      startRevision = ~std::uint64_t{0};  // recovered edits are the user's: keep them autosaved
       ui.recovery.reset();
     } else if (ui.recoveryChoice == editor::RecoveryChoice::Discard && ui.recovery) {
       autosave.discard(ui.recovery->original);
@@ -189,6 +194,7 @@ int runEditor(const EditorOptions& options) {
         auto opened = std::make_unique<editor::EditorSession>(ui.panels.openRequest);
         autosave.discard(std::filesystem::absolute(session->document().file()));
         session = std::move(opened);
+        startRevision = session->document().history().revision();
         ui.panels.cloth = 0;
         camera = startCamera(session->world(), viewportRect());
         ui.panels.tool.reset();
@@ -207,7 +213,7 @@ int runEditor(const EditorOptions& options) {
     drawFrame();
     window.swapBuffers();
     ++displayed;
-    if (Clock::now() - lastAutosave > kAutosaveEvery) {
+    if (Clock::now() - lastAutosave > kAutosaveEvery && session->document().history().revision() != startRevision) {
       try {
         session->autosave(autosave);
       } catch (const std::exception& e) {

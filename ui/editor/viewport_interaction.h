@@ -17,7 +17,7 @@
 namespace weft::editor {
 
 struct ViewportSettings {
-  double grabStiffness = 2000.0;       // N/m: at 10 cm off, 200 N, enough to tear the thesis' cloths
+  double grabStiffness = 60.0;         // N/m: the cloth follows a gentle drag and tears under a long one
   double ballSpeed = 12.0;             // m/s, thrown along the view ray
   double ballRadius = 0.08;            // m
   double ballMass = 1.0;               // kg
