@@ -24,73 +24,56 @@ void drawStatusBar(const EditorSession& session) {
   ImGui::End();
 }
 
-void drawQuitPrompt(EditorSession& session, EditorUi& ui) {
-  if (ui.quit != QuitPrompt::Asking) return;
-  if (!session.dirty()) {
-    ui.quit = QuitPrompt::Confirmed;
-    return;
-  }
-  ImGui::OpenPopup("Unsaved changes");
-  if (ImGui::BeginPopupModal("Unsaved changes", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+// What the user chose at an unsaved-changes prompt.
+enum class UnsavedChoice { Undecided, Proceed, Cancel };
+
+// Unsaved edits are saved or given up on purpose before the document is left (quit, open
+// another scene). Proceed: saved, discarded, or nothing to save. A failed save cancels.
+UnsavedChoice askAboutUnsavedEdits(EditorSession& session, const char* title, const char* saveLabel,
+                                   const char* discardLabel) {
+  if (!session.dirty()) return UnsavedChoice::Proceed;
+  UnsavedChoice choice = UnsavedChoice::Undecided;
+  ImGui::OpenPopup(title);
+  if (ImGui::BeginPopupModal(title, nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
     ImGui::Text("%s has unsaved changes.", session.document().file().filename().string().c_str());
-    if (ImGui::Button("Save and quit")) {
+    if (ImGui::Button(saveLabel)) {
       try {
         session.save();
-        ui.quit = QuitPrompt::Confirmed;
+        choice = UnsavedChoice::Proceed;
       } catch (const std::exception& e) {
         session.status = e.what();
-        ui.quit = QuitPrompt::None;
+        choice = UnsavedChoice::Cancel;
       }
-      ImGui::CloseCurrentPopup();
     }
     ImGui::SameLine();
-    if (ImGui::Button("Discard and quit")) {
-      ui.quit = QuitPrompt::Confirmed;
-      ImGui::CloseCurrentPopup();
-    }
+    if (ImGui::Button(discardLabel)) choice = UnsavedChoice::Proceed;
     ImGui::SameLine();
-    if (ImGui::Button("Cancel")) {
-      ui.quit = QuitPrompt::None;
-      ImGui::CloseCurrentPopup();
-    }
+    if (ImGui::Button("Cancel")) choice = UnsavedChoice::Cancel;
+    if (choice != UnsavedChoice::Undecided) ImGui::CloseCurrentPopup();
     ImGui::EndPopup();
+  }
+  return choice;
+}
+
+void drawQuitPrompt(EditorSession& session, EditorUi& ui) {
+  if (ui.quit != QuitPrompt::Asking) return;
+  switch (askAboutUnsavedEdits(session, "Unsaved changes", "Save and quit", "Discard and quit")) {
+    case UnsavedChoice::Proceed: ui.quit = QuitPrompt::Confirmed; break;
+    case UnsavedChoice::Cancel: ui.quit = QuitPrompt::None; break;
+    case UnsavedChoice::Undecided: break;
   }
 }
 
-// Opening another scene replaces this one: unsaved edits are saved or given up on purpose.
 void drawOpenPrompt(EditorSession& session, EditorUi& ui) {
   if (ui.panels.openRequest.empty() || ui.open == OpenPrompt::Confirmed) return;
-  if (!session.dirty()) {
-    ui.open = OpenPrompt::Confirmed;
-    return;
-  }
   ui.open = OpenPrompt::Asking;
-  ImGui::OpenPopup("Open another scene");
-  if (ImGui::BeginPopupModal("Open another scene", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
-    ImGui::Text("%s has unsaved changes.", session.document().file().filename().string().c_str());
-    if (ImGui::Button("Save, then open")) {
-      try {
-        session.save();
-        ui.open = OpenPrompt::Confirmed;
-      } catch (const std::exception& e) {
-        session.status = e.what();
-        ui.open = OpenPrompt::None;
-        ui.panels.openRequest.clear();
-      }
-      ImGui::CloseCurrentPopup();
-    }
-    ImGui::SameLine();
-    if (ImGui::Button("Discard them, open")) {
-      ui.open = OpenPrompt::Confirmed;
-      ImGui::CloseCurrentPopup();
-    }
-    ImGui::SameLine();
-    if (ImGui::Button("Cancel")) {
+  switch (askAboutUnsavedEdits(session, "Open another scene", "Save, then open", "Discard them, open")) {
+    case UnsavedChoice::Proceed: ui.open = OpenPrompt::Confirmed; break;
+    case UnsavedChoice::Cancel:
       ui.open = OpenPrompt::None;
       ui.panels.openRequest.clear();
-      ImGui::CloseCurrentPopup();
-    }
-    ImGui::EndPopup();
+      break;
+    case UnsavedChoice::Undecided: break;
   }
 }
 

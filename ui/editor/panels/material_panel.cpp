@@ -13,6 +13,7 @@
 #include "editor/scene_edits.h"
 #include "material/material.h"
 #include "panels.h"
+#include "preset_names.h"
 #include "scene/scene_json.h"
 #include "util/atomic_file.h"
 
@@ -21,16 +22,7 @@ namespace weft::editor {
 namespace {
 
 std::vector<std::string> materialPresets(const Scene& scene) {
-  std::vector<std::string> names;
-  for (const auto& dir : defaultSearchPaths(scene.file).materialDirs) {
-    std::error_code ec;
-    for (const auto& entry : std::filesystem::directory_iterator(dir, ec)) {
-      if (entry.path().extension() == ".json") names.push_back(entry.path().stem().string());
-    }
-  }
-  std::sort(names.begin(), names.end());
-  names.erase(std::unique(names.begin(), names.end()), names.end());
-  return names;
+  return presetNames(defaultSearchPaths(scene.file).materialDirs);
 }
 
 bool editNumber(const char* label, double& value, const char* format = "%.4g") {

@@ -9,6 +9,7 @@
 
 #include "editor/scene_edits.h"
 #include "panels.h"
+#include "preset_names.h"
 #include "scene/scene_json.h"
 #include "tearing/tear_table.h"
 
@@ -19,16 +20,7 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 
 std::vector<std::string> tearTablePresets(const Scene& scene) {
-  std::vector<std::string> names;
-  for (const auto& dir : defaultSearchPaths(scene.file).tearTableDirs) {
-    std::error_code ec;
-    for (const auto& entry : std::filesystem::directory_iterator(dir, ec)) {
-      if (entry.path().extension() == ".json") names.push_back(entry.path().stem().string());
-    }
-  }
-  std::sort(names.begin(), names.end());
-  names.erase(std::unique(names.begin(), names.end()), names.end());
-  return names;
+  return presetNames(defaultSearchPaths(scene.file).tearTableDirs);
 }
 
 // ℜ(α) around the full circle, in material space (screen right = material x, up = material y),
