@@ -14,6 +14,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include <imgui_internal.h>
+
 #include "editor/editor_session.h"
 #include "editor/editor_ui.h"
 #include "editor/editor_viewport.h"
@@ -143,6 +145,20 @@ TEST_F(EditorPanelsTest, AddingAndRemovingDirectionsResamplesTheTable) {
   imgui_->click(probe_.centre("tear/fewer"), drawUi());
   imgui_->click(probe_.centre("tear/fewer"), drawUi());
   EXPECT_EQ(session_->scene().cloths[0].material.tearTable->strength.size(), 3u);
+}
+
+TEST_F(EditorPanelsTest, QuittingAsksFirstOnlyWhenThereAreUnsavedEdits) {
+  ui_.quit = QuitPrompt::Asking;
+  imgui_->frame(drawUi());
+  EXPECT_EQ(ui_.quit, QuitPrompt::Confirmed) << "nothing to lose: no prompt";
+
+  imgui_->click(probe_.centre("tear/0"), drawUi());
+  imgui_->typeAndEnter("30", drawUi());
+  ASSERT_TRUE(session_->dirty());
+  ui_.quit = QuitPrompt::Asking;
+  for (int i = 0; i < 3; ++i) imgui_->frame(drawUi());
+  EXPECT_EQ(ui_.quit, QuitPrompt::Asking) << "the prompt waits for the user's choice";
+  EXPECT_EQ(ImGui::GetCurrentContext()->OpenPopupStack.Size, 1) << "the unsaved-changes prompt is open";
 }
 
 // The editor at a fixed frame, panels and viewport, against a golden (tests/ui/snapshots/editor).

@@ -204,6 +204,21 @@ TEST(EditorSession, SaveWritesTheEditedSceneAndKeepsTheOldOneAsBackup) {
   EXPECT_EQ(readText(fs::path(file.string() + ".bak")), original);
 }
 
+TEST(EditorSession, RecoveredEditsAreOneUnsavedUndoableStepOnTopOfTheFile) {
+  test::TempDir dir;
+  const fs::path file = smallScene(dir, "hanging-sheet");
+  const std::string original = readText(file);
+  json recovered = readJson(file);
+  recovered["cloths"][0]["weft_angle_deg"] = 15.0;
+  EditorSession session(file, recovered);
+  EXPECT_DOUBLE_EQ(session.world().scene().cloths[0].weftAngleDeg, 15.0);
+  EXPECT_TRUE(session.dirty());
+  EXPECT_EQ(readText(file), original) << "the file is untouched until saved";
+  session.undo();
+  EXPECT_DOUBLE_EQ(session.scene().cloths[0].weftAngleDeg, 0.0);
+  EXPECT_FALSE(session.dirty());
+}
+
 TEST(EditorSession, ABadSceneFileIsAnInputError) {
   test::TempDir dir;
   const fs::path file = dir.write("scenes/bad.json", R"({"cloths": [{"mesh": {"grid": {}}, "material": "no-such"}]})");
