@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "editor/editor_session.h"
+#include "editor/material_presets.h"
 #include "editor/scene_edits.h"
 #include "scene/scene_json.h"
 #include "support/temp_dir.h"
@@ -223,6 +224,34 @@ TEST(EditorSession, ABadSceneFileIsAnInputError) {
   test::TempDir dir;
   const fs::path file = dir.write("scenes/bad.json", R"({"cloths": [{"mesh": {"grid": {}}, "material": "no-such"}]})");
   EXPECT_THROW(EditorSession session(file), InputError);
+}
+
+}  // namespace
+}  // namespace weft::editor
+
+namespace weft::editor {
+namespace {
+
+TEST(MaterialPresetSaving, AnEditedMaterialSavedAsAPresetLoadsBackAndNothingIsOverwritten) {
+  test::TempDir dir;
+  const fs::path file = smallScene(dir, "hanging-sheet");
+  const json original = readJson(file);
+  const Scene edited = parsed(withAreaDensity(original, parsed(original, file), 0, 0.4), file);
+  const fs::path folder = dir.path() / "materials";
+  fs::create_directories(folder);
+  const fs::path saved = saveMaterialPreset(edited.cloths[0].material, "my-denser-target", folder);
+  EXPECT_EQ(saved, folder / "my-denser-target.json");
+  const Material back = loadMaterialFile(saved);
+  EXPECT_EQ(back.name, "my-denser-target");
+  EXPECT_DOUBLE_EQ(back.areaDensity, 0.4);
+  EXPECT_EQ(back.elasticity, edited.cloths[0].material.elasticity);
+  // The scene beside it finds the new preset by name.
+  const Scene usesIt = parsed(withMaterialPreset(original, 0, "my-denser-target"), file);
+  EXPECT_DOUBLE_EQ(usesIt.cloths[0].material.areaDensity, 0.4);
+
+  EXPECT_THROW(saveMaterialPreset(back, "my-denser-target", folder), std::invalid_argument) << "never overwritten";
+  EXPECT_THROW(saveMaterialPreset(back, "../escape", folder), std::invalid_argument);
+  EXPECT_THROW(saveMaterialPreset(back, "Capital", folder), std::invalid_argument);
 }
 
 }  // namespace

@@ -10,12 +10,12 @@
 #include <string>
 #include <vector>
 
+#include "editor/material_presets.h"
 #include "editor/scene_edits.h"
 #include "material/material.h"
 #include "panels.h"
 #include "preset_names.h"
 #include "scene/scene_json.h"
-#include "util/atomic_file.h"
 
 namespace weft::editor {
 
@@ -71,26 +71,12 @@ void drawMeasuredTable(EditorSession& session, PanelState& state, const Measured
 }
 
 void saveAsPreset(EditorSession& session, PanelState& state, const Material& material) {
-  const std::string name = state.newPresetName;
-  const bool safe = !name.empty() && name.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789-_.") == std::string::npos &&
-                    name.front() != '.';
-  if (!safe) {
-    session.status = "a preset name uses a-z, 0-9, '-', '_' and '.' only";
-    return;
-  }
-  const auto dirs = defaultSearchPaths(session.scene().file).materialDirs;
-  if (dirs.empty()) return;
-  const std::filesystem::path file = dirs.front() / (name + ".json");
-  if (std::filesystem::exists(file)) {
-    session.status = file.string() + " exists; choose another name (presets are not overwritten from here)";
-    return;
-  }
-  Material preset = material;
-  preset.name = name;
-  if (preset.source.empty()) preset.source = "made in Weft's editor";
+  const auto folders = defaultSearchPaths(session.scene().file).materialDirs;
+  if (folders.empty()) return;
   try {
-    writeFileAtomically(file, materialToJson(preset).dump(2) + "\n");
-    session.edit(withMaterialPreset(session.json(), state.cloth, name), "material preset " + name);
+    const std::filesystem::path file = saveMaterialPreset(material, state.newPresetName, folders.front());
+    session.edit(withMaterialPreset(session.json(), state.cloth, state.newPresetName),
+                 std::string("material preset ") + state.newPresetName);
     session.status = "saved the material as " + file.string();
   } catch (const std::exception& e) {
     session.status = e.what();

@@ -29,6 +29,7 @@ struct PanelState {
   int cloth = 0;                 // the cloth the material, tear table and weft panels edit
   int obstacle = -1;             // the obstacle selected in the scene panel (-1: none)
   char saveAsPath[256] = "";     // the scene panel's "save as" file
+  char openPath[256] = "";       // the scene panel's "open" file
   WidgetProbe* probe = nullptr;  // tests only
   char newPresetName[64] = "";   // the material panel's "save as preset" name
   std::optional<ToolTagEditor> tool;  // the tool whose sharp tags the tools panel edits

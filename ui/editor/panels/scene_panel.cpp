@@ -158,6 +158,10 @@ void drawScenePanel(EditorSession& session, PanelState& state) {
     ImGui::EndCombo();
   }
   recordWidget(state, "scene/open");
+  ImGui::SetNextItemWidth(170);
+  ImGui::InputTextWithHint("##openpath", "path/to/scene.json", state.openPath, sizeof state.openPath);
+  ImGui::SameLine();
+  if (ImGui::Button("Open") && state.openPath[0] != '\0') state.openRequest = std::filesystem::absolute(state.openPath);
 
   ImGui::SetNextItemWidth(170);
   ImGui::InputTextWithHint("##saveas", "other/scene.json", state.saveAsPath, sizeof state.saveAsPath);

@@ -1,0 +1,18 @@
+#pragma once
+// "Save as a new preset" from the material panel: the cloth's material, as edited, becomes
+// presets/materials/NAME.json, readable by every scene. Presets are never overwritten from the
+// editor: a preset may be shared by other scenes, and its numbers name their source.
+#include <filesystem>
+#include <string>
+
+#include "material/material.h"
+
+namespace weft::editor {
+
+// Writes `material` as preset `name` in `folder` (atomically) and returns the file. Throws
+// std::invalid_argument, with the reason, for a name that is not a-z, 0-9, '-', '_', '.' (and
+// does not start with '.') or when the preset exists; std::runtime_error when writing fails.
+std::filesystem::path saveMaterialPreset(Material material, const std::string& name,
+                                         const std::filesystem::path& folder);
+
+}  // namespace weft::editor
