@@ -19,6 +19,7 @@
 #include "editor/editor_session.h"
 #include "editor/editor_ui.h"
 #include "editor/editor_viewport.h"
+#include "editor/scene_edits.h"
 #include "headless_gl_context.h"
 #include "render_view.h"
 #include "scene_renderer.h"
@@ -159,6 +160,17 @@ TEST_F(EditorPanelsTest, QuittingAsksFirstOnlyWhenThereAreUnsavedEdits) {
   for (int i = 0; i < 3; ++i) imgui_->frame(drawUi());
   EXPECT_EQ(ui_.quit, QuitPrompt::Asking) << "the prompt waits for the user's choice";
   EXPECT_EQ(ImGui::GetCurrentContext()->OpenPopupStack.Size, 1) << "the unsaved-changes prompt is open";
+}
+
+TEST_F(EditorPanelsTest, UndoingTheSelectedClothsDuplicationKeepsThePanelsWorking) {
+  ASSERT_TRUE(session_->edit(withClothDuplicated(session_->json(), 0, Vec3(0, 0, 0.3)), "duplicate").accepted);
+  imgui_->frame(drawUi());
+  imgui_->click(probe_.centre("scene/cloth1"), drawUi());
+  ASSERT_EQ(ui_.panels.cloth, 1);
+  session_->undo();
+  imgui_->frame(drawUi());  // the material, tear table and weft panels draw cloth 0 again
+  EXPECT_EQ(ui_.panels.cloth, 0);
+  EXPECT_TRUE(session_->resetPending() || session_->world().clothCount() == 1);
 }
 
 // The editor at a fixed frame, panels and viewport, against a golden (tests/ui/snapshots/editor).

@@ -99,6 +99,10 @@ void drawRecoveryPrompt(EditorUi& ui) {
 }  // namespace
 
 void drawEditorUi(EditorSession& session, EditorUi& ui) {
+  // An undo or a removal can take away the selected cloth or obstacle.
+  const int cloths = static_cast<int>(session.scene().cloths.size());
+  if (ui.panels.cloth >= cloths) ui.panels.cloth = cloths - 1;
+  if (ui.panels.obstacle >= static_cast<int>(session.scene().obstacles.size())) ui.panels.obstacle = -1;
   const float w = ImGui::GetIO().DisplaySize.x;
   placeNext(8, 8, 300, 300);
   drawScenePanel(session, ui.panels);
