@@ -72,6 +72,21 @@ TEST(SceneEdits, EditingATearEntryOfAPresetTableInlinesItAndChangesOnlyThatEntry
   EXPECT_FALSE(edited["cloths"][0]["tear_table"].contains("name")) << "an edited table no longer claims the preset's name";
 }
 
+TEST(SceneEdits, RemovingTheTearTableStopsTearingAndAPresetBringsItBack) {
+  test::TempDir dir;
+  const fs::path file = smallScene(dir, "ball-into-sheet-table4.1-cloth2");
+  const json original = readJson(file);
+  const Scene before = parsed(original, file);
+  ASSERT_TRUE(before.cloths[0].material.tearTable);
+  const json removed = withoutTearTable(original, before, 0);
+  const Scene none = parsed(removed, file);
+  EXPECT_FALSE(none.cloths[0].material.tearTable);
+  EXPECT_DOUBLE_EQ(none.cloths[0].material.areaDensity, before.cloths[0].material.areaDensity) << "the rest stays";
+  const Scene back = parsed(withTearTablePreset(removed, 0, "karaoz2015-table4.1-cloth3"), file);
+  ASSERT_TRUE(back.cloths[0].material.tearTable);
+  EXPECT_EQ(back.cloths[0].material.tearTable->name, "karaoz2015-table4.1-cloth3");
+}
+
 TEST(SceneEdits, ResamplingTheTableKeepsItsCurve) {
   test::TempDir dir;
   const fs::path file = smallScene(dir, "ball-into-sheet-table4.1-cloth2");
