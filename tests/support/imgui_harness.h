@@ -4,6 +4,7 @@
 // keyboard input through ImGui 1.86's input API (io.MousePos, io.MouseDown, io.KeysDown,
 // io.AddInputCharacter). Each frame() is one ImGui frame; input set before it is what the
 // widgets see in it.
+#include <GL/gl.h>
 #include <imgui.h>
 #include <imgui_impl_opengl3.h>
 

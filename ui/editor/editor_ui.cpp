@@ -104,13 +104,13 @@ void drawEditorUi(EditorSession& session, EditorUi& ui) {
   if (ui.panels.cloth >= cloths) ui.panels.cloth = cloths - 1;
   if (ui.panels.obstacle >= static_cast<int>(session.scene().obstacles.size())) ui.panels.obstacle = -1;
   const float w = ImGui::GetIO().DisplaySize.x;
-  placeNext(8, 8, 300, 300);
+  placeNext(8, 8, 300, 290);
   drawScenePanel(session, ui.panels);
-  placeNext(8, 316, 300, 170);
+  placeNext(8, 306, 300, 150);
   drawPlaybackPanel(session, ui.panels);
-  placeNext(8, 494, 300, 240);
+  placeNext(8, 464, 300, 230);
   drawSolverPanel(session, ui.panels);
-  placeNext(8, 742, 300, 130);
+  placeNext(8, 702, 300, 170);
   drawToolsPanel(session, ui.panels);
   placeNext(w - 468, 8, 460, 420);
   drawMaterialPanel(session, ui.panels);
