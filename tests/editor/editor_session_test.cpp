@@ -119,6 +119,10 @@ TEST(SceneEdits, MaterialEditsInlineThePresetAndChangeTheNamedValue) {
   EXPECT_DOUBLE_EQ(c33.cloths[0].material.elasticity.measured.directions[2][3], 99.0);
   EXPECT_DOUBLE_EQ(c33.cloths[0].material.elasticity.measured.directions[2][0], m0.elasticity.measured.directions[2][0]);
 
+  const Scene bent = parsed(withBendingStiffness(original, before, 0, 1, 2, 3e-4), file);
+  EXPECT_DOUBLE_EQ(bent.cloths[0].material.bending.measured[1][2], 3e-4);
+  EXPECT_DOUBLE_EQ(bent.cloths[0].material.bending.measured[0][0], m0.bending.measured[0][0]);
+
   const Scene iso = parsed(withIsotropicElasticity(original, before, 0, 3000.0, 0.25), file);
   EXPECT_EQ(iso.cloths[0].material.elasticity.model, ElasticitySettings::Model::Isotropic);
   EXPECT_DOUBLE_EQ(iso.cloths[0].material.elasticity.youngModulus, 3000.0);

@@ -161,6 +161,20 @@ json withElasticityCoefficient(const json& scene, const Scene& parsed, int cloth
   return out;
 }
 
+json withBendingStiffness(const json& scene, const Scene& parsed, int cloth, int row, int column, double value) {
+  json out = scene;
+  json& bending = inlineMaterial(out, parsed, cloth)["bending"];
+  const std::string model = bending.value("model", "constant");
+  if (model == "measured") {
+    bending.at("stiffness").at(static_cast<std::size_t>(row)).at(static_cast<std::size_t>(column)) = value;
+  } else if (model == "constant") {
+    bending["stiffness_n_m"] = value;
+  } else {
+    throw std::logic_error("the material has no bending to edit");
+  }
+  return out;
+}
+
 json withIsotropicElasticity(const json& scene, const Scene& parsed, int cloth, double youngModulus,
                              double poissonRatio) {
   json out = scene;

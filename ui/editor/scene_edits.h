@@ -42,6 +42,10 @@ nlohmann::json withStiffnessScale(const nlohmann::json& scene, const Scene& pars
 // reference stretch; column 0..3 is c11, c12, c22, c33 (N/m).
 nlohmann::json withElasticityCoefficient(const nlohmann::json& scene, const Scene& parsed, int cloth, int row,
                                          int column, double value);
+// Bending stiffness (N*m): for a measured model, row 0..2 (edge direction 0, 45, 90 deg) and
+// column 0..4 (curvature 0, 5, 10, 15, 20 1/m); for a constant model row and column are ignored.
+nlohmann::json withBendingStiffness(const nlohmann::json& scene, const Scene& parsed, int cloth, int row, int column,
+                                    double value);
 // An isotropic membrane (Young's modulus E*h in N/m, Poisson ratio), replacing measured data.
 nlohmann::json withIsotropicElasticity(const nlohmann::json& scene, const Scene& parsed, int cloth,
                                        double youngModulus, double poissonRatio);

@@ -70,6 +70,45 @@ void drawMeasuredTable(EditorSession& session, PanelState& state, const Measured
   }
 }
 
+// Bending (Bridson 2003; measured by Wang et al. 2011 by edge direction and curvature).
+void drawBending(EditorSession& session, PanelState& state, const BendingSettings& bending) {
+  if (bending.model == BendingSettings::Model::None) {
+    ImGui::TextUnformatted("bending: none");
+    return;
+  }
+  if (bending.model == BendingSettings::Model::Constant) {
+    double k = bending.stiffness;
+    if (editNumber("bending stiffness (N*m)", k) && k >= 0.0) {
+      session.edit(withBendingStiffness(session.json(), session.scene(), state.cloth, 0, 0, k), "bending stiffness");
+    }
+    return;
+  }
+  static const char* kRows[3] = {"0 deg", "45 deg", "90 deg"};
+  if (ImGui::BeginTable("bending", 6, ImGuiTableFlags_Borders | ImGuiTableFlags_SizingFixedFit)) {
+    ImGui::TableSetupColumn("N*m");
+    for (const char* alpha : {"a=0", "a=5", "a=10", "a=15", "a=20"}) ImGui::TableSetupColumn(alpha);
+    ImGui::TableHeadersRow();
+    for (int row = 0; row < 3; ++row) {
+      ImGui::TableNextRow();
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(kRows[row]);
+      for (int col = 0; col < 5; ++col) {
+        ImGui::TableNextColumn();
+        double v = bending.measured[static_cast<std::size_t>(row)][static_cast<std::size_t>(col)];
+        const std::string id = "##b" + std::to_string(row) + std::to_string(col);
+        ImGui::SetNextItemWidth(62);
+        if (ImGui::InputDouble(id.c_str(), &v, 0.0, 0.0, "%.3g",
+                               ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll) &&
+            std::isfinite(v) && v >= 0.0) {
+          session.edit(withBendingStiffness(session.json(), session.scene(), state.cloth, row, col, v),
+                       std::string("bending at ") + kRows[row]);
+        }
+      }
+    }
+    ImGui::EndTable();
+  }
+}
+
 void saveAsPreset(EditorSession& session, PanelState& state, const Material& material) {
   const auto folders = defaultSearchPaths(session.scene().file).materialDirs;
   if (folders.empty()) return;
@@ -143,6 +182,8 @@ void drawMaterialPanel(EditorSession& session, PanelState& state) {
   } else {
     drawMeasuredTable(session, state, material.elasticity.measured);
   }
+
+  if (ImGui::CollapsingHeader("Bending")) drawBending(session, state, material.bending);
 
   ImGui::Separator();
   ImGui::SetNextItemWidth(160);
