@@ -2,6 +2,8 @@
 
 #include <imgui.h>
 
+#include "editor/editor_viewport.h"
+
 namespace weft::editor {
 
 namespace {
@@ -103,20 +105,23 @@ void drawEditorUi(EditorSession& session, EditorUi& ui) {
   const int cloths = static_cast<int>(session.scene().cloths.size());
   if (ui.panels.cloth >= cloths) ui.panels.cloth = cloths - 1;
   if (ui.panels.obstacle >= static_cast<int>(session.scene().obstacles.size())) ui.panels.obstacle = -1;
-  const float w = ImGui::GetIO().DisplaySize.x;
-  placeNext(8, 8, 300, 290);
+  // Columns as editor_viewport.h lays them out, so the scene shows between them.
+  const float m = kPanelMargin;
+  const float left = m, leftWidth = kLeftColumnWidth - 2 * m;
+  const float right = ImGui::GetIO().DisplaySize.x - kRightColumnWidth + m;
+  placeNext(left, 8, leftWidth, 290);
   drawScenePanel(session, ui.panels);
-  placeNext(8, 306, 300, 150);
+  placeNext(left, 306, leftWidth, 150);
   drawPlaybackPanel(session, ui.panels);
-  placeNext(8, 464, 300, 230);
+  placeNext(left, 464, leftWidth, 230);
   drawSolverPanel(session, ui.panels);
-  placeNext(8, 702, 300, 170);
+  placeNext(left, 702, leftWidth, 170);
   drawToolsPanel(session, ui.panels);
-  placeNext(w - 468, 8, 460, 420);
+  placeNext(right, 8, kRightColumnWidth - 2 * m, 420);
   drawMaterialPanel(session, ui.panels);
-  placeNext(w - 468, 436, 250, 430);
+  placeNext(right, 436, 250, 430);
   drawTearTablePanel(session, ui.panels);
-  placeNext(w - 212, 436, 204, 260);
+  placeNext(right + 256, 436, 204, 260);
   drawWeftPanel(session, ui.panels);
   drawStatusBar(session);
   drawQuitPrompt(session, ui);

@@ -6,15 +6,9 @@
 
 namespace weft::editor {
 
-namespace {
-// The columns editor_ui.cpp places the panels in, and the status bar.
-constexpr int kLeftColumn = 316;
-constexpr int kRightColumn = 476;
-constexpr int kStatusBar = 24;
-}  // namespace
-
 ViewportRect sceneViewport(int displayWidth, int displayHeight) {
-  ViewportRect rect{kLeftColumn, 0, displayWidth - kLeftColumn - kRightColumn, displayHeight - kStatusBar};
+  ViewportRect rect{kLeftColumnWidth, 0, displayWidth - kLeftColumnWidth - kRightColumnWidth,
+                    displayHeight - kStatusBarHeight};
   if (rect.width < 200 || rect.height < 100) rect = ViewportRect{0, 0, std::max(displayWidth, 1), std::max(displayHeight, 1)};
   return rect;
 }

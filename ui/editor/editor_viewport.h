@@ -8,6 +8,12 @@
 
 namespace weft::editor {
 
+// The window's layout: panels in a column on each side, a status bar along the bottom (pixels).
+inline constexpr int kPanelMargin = 8;
+inline constexpr int kLeftColumnWidth = 316;   // left panels 300 wide, with margins
+inline constexpr int kRightColumnWidth = 476;  // right panels 460 wide, with margins
+inline constexpr int kStatusBarHeight = 24;
+
 struct ViewportRect {
   int x = 0, y = 0;           // top-left corner, pixels from the window's top-left
   int width = 1, height = 1;  // pixels

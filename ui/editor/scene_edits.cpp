@@ -290,4 +290,22 @@ json withLinearTolerance(const json& scene, double tolerance) {
   return out;
 }
 
+json withIntegrator(const json& scene, const std::string& name) {
+  json out = scene;
+  out["solver"]["integrator"] = name;
+  return out;
+}
+
+json withLinearSolverType(const json& scene, const std::string& name) {
+  json out = scene;
+  out["solver"]["linear_solver"]["type"] = name;
+  return out;
+}
+
+json withStage(const json& scene, const std::string& stage, bool runs) {
+  json out = scene;
+  out["stages"][stage] = runs;
+  return out;
+}
+
 }  // namespace weft::editor

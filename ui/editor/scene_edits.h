@@ -67,5 +67,9 @@ nlohmann::json withMassDamping(const nlohmann::json& scene, double perSecond);
 nlohmann::json withTimeStep(const nlohmann::json& scene, double dt);
 nlohmann::json withSubsteps(const nlohmann::json& scene, int substeps);
 nlohmann::json withLinearTolerance(const nlohmann::json& scene, double tolerance);
+// By the names the scene file uses: "newton", "cg", "gravity"...
+nlohmann::json withIntegrator(const nlohmann::json& scene, const std::string& name);
+nlohmann::json withLinearSolverType(const nlohmann::json& scene, const std::string& name);
+nlohmann::json withStage(const nlohmann::json& scene, const std::string& stage, bool runs);
 
 }  // namespace weft::editor

@@ -26,10 +26,7 @@ std::vector<std::string> materialPresets(const Scene& scene) {
 }
 
 bool editNumber(const char* label, double& value, const char* format = "%.4g") {
-  ImGui::SetNextItemWidth(110);
-  return ImGui::InputDouble(label, &value, 0.0, 0.0, format,
-                            ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll) &&
-         std::isfinite(value);
+  return numberField(label, value, format, 110);
 }
 
 void drawMeasuredTable(EditorSession& session, PanelState& state, const MeasuredElasticity& measured) {
@@ -48,10 +45,7 @@ void drawMeasuredTable(EditorSession& session, PanelState& state, const Measured
         ImGui::TableNextColumn();
         double v = values[static_cast<std::size_t>(col)];
         const std::string id = "##e" + std::to_string(row + 1) + std::to_string(col);
-        ImGui::SetNextItemWidth(80);
-        if (ImGui::InputDouble(id.c_str(), &v, 0.0, 0.0, "%.5g",
-                               ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll) &&
-            std::isfinite(v)) {
+        if (numberField(id.c_str(), v, "%.5g", 80)) {
           session.edit(withElasticityCoefficient(session.json(), session.scene(), state.cloth, row, col, v),
                        std::string(kCoefficients[col]) + " at " + kRows[row + 1]);
         }
@@ -96,10 +90,7 @@ void drawBending(EditorSession& session, PanelState& state, const BendingSetting
         ImGui::TableNextColumn();
         double v = bending.measured[static_cast<std::size_t>(row)][static_cast<std::size_t>(col)];
         const std::string id = "##b" + std::to_string(row) + std::to_string(col);
-        ImGui::SetNextItemWidth(62);
-        if (ImGui::InputDouble(id.c_str(), &v, 0.0, 0.0, "%.3g",
-                               ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll) &&
-            std::isfinite(v) && v >= 0.0) {
+        if (numberField(id.c_str(), v, "%.3g", 62) && v >= 0.0) {
           session.edit(withBendingStiffness(session.json(), session.scene(), state.cloth, row, col, v),
                        std::string("bending at ") + kRows[row]);
         }

@@ -47,6 +47,10 @@ struct PanelState {
 // Records the last drawn item under `id` when a probe is attached.
 void recordWidget(PanelState& state, const std::string& id);
 
+// A number the user types: selected whole on click, taken when Enter is pressed, and only when
+// finite. True when a new value is in `value` (each panel still checks its own range).
+bool numberField(const char* label, double& value, const char* format, float width);
+
 void drawScenePanel(EditorSession& session, PanelState& state);
 void drawMaterialPanel(EditorSession& session, PanelState& state);
 void drawTearTablePanel(EditorSession& session, PanelState& state);

@@ -115,15 +115,19 @@ void drawForces(EditorSession& session) {
   Vec3 wind = forces.wind.velocity;
   if (editVector("wind (m/s)", wind)) session.edit(withWind(session.json(), wind), "wind");
   double damping = forces.damping.mass;
-  ImGui::SetNextItemWidth(100);
-  if (ImGui::InputDouble("mass damping (1/s)", &damping, 0.0, 0.0, "%.3g",
-                         ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll) &&
-      std::isfinite(damping) && damping >= 0.0) {
+  if (numberField("mass damping (1/s)", damping, "%.3g", 100) && damping >= 0.0) {
     session.edit(withMassDamping(session.json(), damping), "mass damping");
   }
 }
 
 }  // namespace
+
+bool numberField(const char* label, double& value, const char* format, float width) {
+  ImGui::SetNextItemWidth(width);
+  return ImGui::InputDouble(label, &value, 0.0, 0.0, format,
+                            ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll) &&
+         std::isfinite(value);
+}
 
 void drawScenePanel(EditorSession& session, PanelState& state) {
   if (!ImGui::Begin("Scene")) {
@@ -182,9 +186,7 @@ void drawScenePanel(EditorSession& session, PanelState& state) {
   for (const std::string& name : stages) {
     bool on = session.json().contains("stages") ? session.json()["stages"].value(name, true) : true;
     if (ImGui::Checkbox(name.c_str(), &on)) {
-      nlohmann::json next = session.json();
-      next["stages"][name] = on;
-      session.edit(std::move(next), std::string(on ? "run " : "skip ") + name);
+      session.edit(withStage(session.json(), name, on), std::string(on ? "run " : "skip ") + name);
     }
   }
   ImGui::TextDisabled("runs now:");

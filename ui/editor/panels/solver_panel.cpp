@@ -28,10 +28,8 @@ void drawSolverPanel(EditorSession& session, PanelState& state) {
   }
   const SolverSpec& solver = session.scene().solver;
   double dt = solver.dt * 1000.0;
-  ImGui::SetNextItemWidth(120);
-  if (ImGui::InputDouble("time step (ms)", &dt, 0.0, 0.0, "%.4g",
-                         ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll)) {
-    if (std::isfinite(dt) && dt > 0.0) session.edit(withTimeStep(session.json(), dt / 1000.0), "time step");
+  if (numberField("time step (ms)", dt, "%.4g", 120) && dt > 0.0) {
+    session.edit(withTimeStep(session.json(), dt / 1000.0), "time step");
   }
   recordWidget(state, "solver/dt");
   int substeps = solver.substeps;
@@ -45,9 +43,7 @@ void drawSolverPanel(EditorSession& session, PanelState& state) {
   if (ImGui::BeginCombo("integrator", current)) {
     for (const char* name : integrators) {
       if (ImGui::Selectable(name, std::string(name) == current)) {
-        nlohmann::json next = session.json();
-        next["solver"]["integrator"] = name;
-        session.edit(std::move(next), std::string("integrator ") + name);
+        session.edit(withIntegrator(session.json(), name), std::string("integrator ") + name);
       }
     }
     ImGui::EndCombo();
@@ -57,18 +53,14 @@ void drawSolverPanel(EditorSession& session, PanelState& state) {
   if (ImGui::BeginCombo("linear solver", solverName)) {
     for (const char* name : {"cg", "cholmod"}) {
       if (ImGui::Selectable(name, std::string(name) == solverName)) {
-        nlohmann::json next = session.json();
-        next["solver"]["linear_solver"]["type"] = name;
-        session.edit(std::move(next), std::string("linear solver ") + name);
+        session.edit(withLinearSolverType(session.json(), name), std::string("linear solver ") + name);
       }
     }
     ImGui::EndCombo();
   }
   double tolerance = solver.linearTolerance;
-  ImGui::SetNextItemWidth(120);
-  if (ImGui::InputDouble("CG tolerance", &tolerance, 0.0, 0.0, "%.2g",
-                         ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll)) {
-    if (std::isfinite(tolerance) && tolerance > 0.0) session.edit(withLinearTolerance(session.json(), tolerance), "CG tolerance");
+  if (numberField("CG tolerance", tolerance, "%.2g", 120) && tolerance > 0.0) {
+    session.edit(withLinearTolerance(session.json(), tolerance), "CG tolerance");
   }
 
   ImGui::Separator();

@@ -118,10 +118,8 @@ void drawTearTablePanel(EditorSession& session, PanelState& state) {
     double value = table.strength[static_cast<std::size_t>(k)];
     const std::string label = std::to_string(static_cast<int>(std::lround(tableDirectionDeg(table, k)))) + " deg##tear" +
                               std::to_string(k);
-    ImGui::SetNextItemWidth(120);
-    if (ImGui::InputDouble(label.c_str(), &value, 0.0, 0.0, "%.3g",
-                           ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll)) {
-      if (std::isfinite(value) && value > 0.0) {
+    if (numberField(label.c_str(), value, "%.3g", 120)) {
+      if (value > 0.0) {
         session.edit(withTearStrength(session.json(), scene, state.cloth, k, value), "tear strength " + label);
       } else {
         session.status = "a tear strength must be a positive number";
