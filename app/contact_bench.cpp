@@ -10,6 +10,7 @@
 #include <iostream>
 #include <sstream>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include "command.h"
@@ -26,6 +27,7 @@ namespace fs = std::filesystem;
 
 struct ContactBenchRow {
   bool self = false;
+  bool reusePairs = true;
   int vertices = 0;
   double medianContactMs = 0.0;
   double maxContactMs = 0.0;
@@ -37,14 +39,17 @@ struct ContactBenchRow {
   bool clean = true;  // no step left collisions unresolved
 };
 
-ContactBenchRow measure(const ContactBenchOptions& options, bool self) {
+ContactBenchRow measure(const ContactBenchOptions& options, bool self, bool reusePairs) {
   const fs::path scene = fs::path(WEFT_SOURCE_DIR) / "presets" / "scenes" / "sheet-on-sphere.json";
   const int n = options.resolution;
   const std::vector<std::string> overrides{
       "cloths.0.mesh.grid.resolution=[" + std::to_string(n) + "," + std::to_string(n) + "]",
-      std::string("contact.self=") + (self ? "true" : "false"), "solver.threads=" + std::to_string(options.threads)};
+      std::string("contact.self=") + (self ? "true" : "false"),
+      std::string("contact.reuse_pairs=") + (reusePairs ? "true" : "false"),
+      "solver.threads=" + std::to_string(options.threads)};
   ContactBenchRow row;
   row.self = self;
+  row.reusePairs = reusePairs;
   std::vector<double> contactSamples, stepSamples;
   ContactStats totals;
   for (int repeat = 0; repeat < options.repeats; ++repeat) {
@@ -83,11 +88,14 @@ ContactBenchRow measure(const ContactBenchOptions& options, bool self) {
 int runContactBench(const ContactBenchOptions& options) {
   std::vector<ContactBenchRow> rows;
   try {
-    std::printf("%-6s %8s %16s %14s %14s %12s %10s %10s %10s\n", "self", "vertices", "contact ms/step", "max ms/step",
+    std::printf("%-6s %-7s %8s %16s %14s %14s %12s %10s %10s %10s\n", "self", "reuse", "vertices", "contact ms/step", "max ms/step",
                 "whole ms/step", "prox imp/st", "ccd it/st", "ccd col/st", "zones/st");
-    for (bool self : {false, true}) {
-      const ContactBenchRow r = measure(options, self);
-      std::printf("%-6s %8d %16.3f %14.3f %14.3f %12.1f %10.2f %10.2f %10.2f%s\n", r.self ? "on" : "off", r.vertices,
+    // Each case with the pair cache and without it, one after the other: the ratio is what to
+    // read on a machine whose speed drifts.
+    for (const auto& [self, reusePairs] : {std::pair{false, true}, {false, false}, {true, true}, {true, false}}) {
+      const ContactBenchRow r = measure(options, self, reusePairs);
+      std::printf("%-6s %-7s %8d %16.3f %14.3f %14.3f %12.1f %10.2f %10.2f %10.2f%s\n", r.self ? "on" : "off",
+                  r.reusePairs ? "on" : "off", r.vertices,
                   r.medianContactMs, r.maxContactMs, r.medianStepMs, r.proximityImpulsesPerStep, r.ccdIterationsPerStep,
                   r.ccdCollisionsPerStep, r.impactZoneStepShare, r.clean ? "" : "  (unresolved steps!)");
       std::fflush(stdout);
@@ -102,11 +110,11 @@ int runContactBench(const ContactBenchOptions& options) {
                              "sheet-on-sphere, " + std::to_string(options.resolution) + "^2, " +
                                  std::to_string(options.warmup) + " warm-up steps, " + std::to_string(options.steps) +
                                  " timed steps x " + std::to_string(options.repeats) + " repeats");
-  csv << "self_collision,vertices,median_contact_ms_per_step,max_contact_ms_per_step,median_step_ms,"
+  csv << "self_collision,reuse_pairs,vertices,median_contact_ms_per_step,max_contact_ms_per_step,median_step_ms,"
          "proximity_impulses_per_step,ccd_iterations_per_step,ccd_collisions_per_step,impact_zone_steps_per_step,"
          "resolved\n";
   for (const auto& r : rows) {
-    csv << (r.self ? "on" : "off") << "," << r.vertices << "," << r.medianContactMs << "," << r.maxContactMs << ","
+    csv << (r.self ? "on" : "off") << "," << (r.reusePairs ? "on" : "off") << "," << r.vertices << "," << r.medianContactMs << "," << r.maxContactMs << ","
         << r.medianStepMs << "," << r.proximityImpulsesPerStep << "," << r.ccdIterationsPerStep << ","
         << r.ccdCollisionsPerStep << "," << r.impactZoneStepShare << "," << (r.clean ? "true" : "false") << "\n";
   }

@@ -127,13 +127,15 @@ bool detectCollision(const std::vector<ContactBody>& bodies, const PrimitivePair
 
 bool runCollisionPass(std::vector<ContactBody>& bodies, const ContactPairing& pairing,
                       const ContactStepSettings& settings, const std::vector<int>& bodyToWorldIndex,
-                      CandidatePairs& scratch, std::vector<PrimitivePair>& pairs, PassCounts& counts,
+                      PairCache* cache, CandidatePairs& scratch, std::vector<PrimitivePair>& pairs, PassCounts& counts,
                       std::vector<SharpContactRecord>& records) {
   for (int iteration = 0; iteration < settings.ccdIterations; ++iteration) {
     ++counts.ccdIterations;
     long long collisions = settings.ground != nullptr ? stopAtGround(bodies, settings) : 0;
     counts.groundContacts += collisions;
-    findPrimitivePairs(bodies, pairing, 0.0, scratch, pairs);
+    if (!cache || !cache->findPairs(bodies, pairing, 0.0, PairCache::Span::WholeStep, settings.h, pairs)) {
+      findPrimitivePairs(bodies, pairing, 0.0, scratch, pairs);
+    }
     for (const PrimitivePair& pair : pairs) {
       Collision c;
       if (!detectCollision(bodies, pair, settings, c)) continue;

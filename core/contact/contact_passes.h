@@ -14,6 +14,7 @@
 #include "contact/contact_body.h"
 #include "contact/contact_pairs.h"
 #include "contact/near_pairs.h"
+#include "contact/pair_cache.h"
 #include "scene/contact_spec.h"
 
 namespace weft {
@@ -55,10 +56,11 @@ struct PassCounts {
 void runProximityPass(std::vector<ContactBody>& bodies, const std::vector<NearPair>& nearPairs,
                       const ContactStepSettings& settings, PassCounts& counts);
 
-// Pass 2. Returns true when the last iteration found no collision.
+// Pass 2. Returns true when the last iteration found no collision. Each iteration takes its pairs
+// from `cache` when it can answer (null: none), else searches afresh.
 bool runCollisionPass(std::vector<ContactBody>& bodies, const ContactPairing& pairing,
                       const ContactStepSettings& settings, const std::vector<int>& bodyToWorldIndex,
-                      CandidatePairs& scratch, std::vector<PrimitivePair>& pairs, PassCounts& counts,
+                      PairCache* cache, CandidatePairs& scratch, std::vector<PrimitivePair>& pairs, PassCounts& counts,
                       std::vector<SharpContactRecord>& records);
 
 // Pass 3.

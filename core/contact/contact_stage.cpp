@@ -31,6 +31,9 @@ ContactStage::ContactStage(const Scene& scene) : spec_(scene.contact), ground_(s
   if (!groundRuns) ground_.enabled = false;
   runs_ = !pairing_.empty() || groundRuns;
   selfCollision_ = !pairing_.self.empty();
+  pairCache_ = PairCache(kSkinPerThickness * spec_.thickness);
+  pairCache_.add(obstaclePairing_, holdReach());
+  pairCache_.add(clothPairing_, spec_.thickness);
   holdsVertices_ = (!obstaclePairing_.empty() || ground_.enabled) &&
                    scene.solver.integrator == IntegratorKind::LinearizedBackwardEuler;
   bodies_.resize(static_cast<std::size_t>(clothCount + obstacleCount));
@@ -117,7 +120,8 @@ void ContactStage::resolve(std::vector<Cloth>& cloths, const std::vector<std::ve
   bool resolved = false;
   {
     StageTimer timer(profile, "contact_ccd");
-    resolved = runCollisionPass(bodies_, pairing_, settings, bodyToWorldIndex_, scratch_, pairs_, counts, records_);
+    resolved = runCollisionPass(bodies_, pairing_, settings, bodyToWorldIndex_, spec_.reusePairs ? &pairCache_ : nullptr,
+                                scratch_, pairs_, counts, records_);
   }
   if (!resolved) {
     StageTimer timer(profile, "contact_impact_zones");
@@ -146,10 +150,15 @@ void ContactStage::prepare(std::vector<Cloth>& cloths, const std::vector<std::ve
     // fewer pairs in a sheet, whose neighbouring triangles all nearly touch).
     StageTimer timer(profile, "contact_start_pairs");
     for (ContactBody& body : bodies_) body.swept.x1 = body.x0;
-    findPrimitivePairs(bodies_, obstaclePairing_, holdReach(), scratch_, startPairs_);
+    auto findStartPairs = [&](const ContactPairing& pairing, double reach) {
+      if (!spec_.reusePairs || !pairCache_.findPairs(bodies_, pairing, reach, PairCache::Span::Start, h, startPairs_)) {
+        findPrimitivePairs(bodies_, pairing, reach, scratch_, startPairs_);
+      }
+    };
+    findStartPairs(obstaclePairing_, holdReach());
     measureNearPairs(bodies_, startPairs_, holdReach(), nearPairs_);
     if (!clothPairing_.empty()) {
-      findPrimitivePairs(bodies_, clothPairing_, spec_.thickness, scratch_, startPairs_);
+      findStartPairs(clothPairing_, spec_.thickness);
       measureNearPairs(bodies_, startPairs_, spec_.thickness, nearClothPairs_);
       nearPairs_.insert(nearPairs_.end(), nearClothPairs_.begin(), nearClothPairs_.end());
     }

@@ -94,6 +94,10 @@ class ContactStage {
   bool holdsVertices_ = false;     // the integrator takes held vertices (linearized backward Euler)
   HeldContacts held_;
   std::vector<std::vector<HeldVertex>> heldVertices_;
+  // The near pairs kept from step to step (pair_cache.h). Its skin, as a multiple of the
+  // thickness: a vertex re-anchors after moving half of it.
+  static constexpr double kSkinPerThickness = 1.0;
+  PairCache pairCache_;
   CandidatePairs scratch_;
   std::vector<PrimitivePair> pairs_;
   std::vector<PrimitivePair> startPairs_;  // candidate pairs at the start of the step

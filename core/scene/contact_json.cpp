@@ -151,7 +151,8 @@ std::vector<ObstacleSpec> parseObstacles(const json& array, const std::string& p
 
 ContactSpec parseContact(const json& j, const std::string& pointer, const SceneReadContext& ctx) {
   const FieldReader r(j, pointer, ctx.file,
-                      {"obstacles", "self", "thickness", "self_friction", "ccd_iterations", "impact_zone_iterations"});
+                      {"obstacles", "self", "thickness", "self_friction", "ccd_iterations", "impact_zone_iterations",
+                       "reuse_pairs"});
   ContactSpec contact;
   contact.obstacles = r.boolean("obstacles", contact.obstacles);
   contact.self = r.boolean("self", contact.self);
@@ -159,6 +160,7 @@ ContactSpec parseContact(const json& j, const std::string& pointer, const SceneR
   contact.selfFriction = r.number("self_friction", contact.selfFriction, Bound::NonNegative);
   contact.ccdIterations = r.integer("ccd_iterations", contact.ccdIterations, 1);
   contact.impactZoneIterations = r.integer("impact_zone_iterations", contact.impactZoneIterations, 1);
+  contact.reusePairs = r.boolean("reuse_pairs", contact.reusePairs);
   return contact;
 }
 

@@ -73,6 +73,10 @@ struct ContactSpec {
   double selfFriction = 0.2;       // Coulomb coefficient of cloth against cloth
   int ccdIterations = 8;           // pass 2: bound on iterated CCD impulses before impact zones
   int impactZoneIterations = 50;   // pass 3: bound on impact-zone merging rounds
+  // Keep the near pairs from step to step in a skin list (contact/pair_cache.h) instead of
+  // searching every time. Exact either way (the same pairs meet the same tests); off only to
+  // measure what it saves or to rule it out.
+  bool reusePairs = true;
 
   friend bool operator==(const ContactSpec&, const ContactSpec&) = default;
 };

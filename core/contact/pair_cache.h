@@ -1,0 +1,106 @@
+#pragma once
+// A skin list ("Verlet list", Verlet 1967) of the primitive pairs near each other, kept from step
+// to step, so that a cloth resting on an obstacle or on itself is not searched afresh several
+// times a step.
+//
+// Each vertex has an anchor: a position it stays within half the skin of. The cache holds every
+// pair of features (vertex-face, edge-edge) whose distance, measured with all their vertices at
+// their anchors, is below the body pair's reach plus the skin. While every vertex's start and
+// end of step stay within half the skin of its anchor, so does every point of its path (the ball
+// is convex), and a pair that comes within the reach anywhere in the step was within the reach
+// plus the skin at the anchors: it is in the cache. The cache is then exact, not a heuristic.
+//
+// A vertex that leaves its ball is re-anchored, and only the pairs of the features around it are
+// searched again (its triangles against the other bodies' trees of anchored boxes). When too many
+// vertices move at once (a falling cloth, a fast tool) the cache steps aside for a while and the
+// callers search afresh (findPrimitivePairs), with exponential back-off before it tries again.
+//
+// The pairs come out in the order findPrimitivePairs gives them (body pairs in pairing order; in
+// each, vertex-face pairs by vertex then face, then face-vertex pairs, then edge-edge pairs), so
+// the passes meet the colliding pairs in the same order either way.
+#include <utility>
+#include <vector>
+
+#include "collision/bvh.h"
+#include "collision/candidate_pairs.h"
+#include "contact/contact_body.h"
+#include "contact/contact_pairs.h"
+
+namespace weft {
+
+struct PairCacheStats {
+  long long uses = 0;             // calls of findPairs
+  long long served = 0;           // ... that the cache answered
+  long long fullBuilds = 0;       // times every pair was searched afresh into the cache
+  long long reanchoredVertices = 0;  // vertices re-anchored (and their features searched again) in partial updates
+};
+
+class PairCache {
+ public:
+  // skin (m) > 0: how far a vertex may wander from its anchor, twice over.
+  explicit PairCache(double skin = 0.0) : skin_(skin) {}
+
+  // The body pairs of `pairing` will be asked for pairs within up to `reach` (m).
+  void add(const ContactPairing& pairing, double reach);
+  bool empty() const { return entries_.empty(); }
+
+  // When, in the step, the bodies' positions are read.
+  enum class Span {
+    Start,     // at the start only (x0). Anchors are placed along a predicted path: to x0 + h v for a
+               // cloth, to x1 for an obstacle (its end pose is known before the solve)
+    WholeStep  // over the step, x0 to x1
+  };
+
+  // Every pair of `pairing` (added with a reach >= `reach`) whose features come within `reach`
+  // over `span`, possibly with others farther apart (their feature boxes are within `reach`), in
+  // findPrimitivePairs' order. Returns false, with `out` empty, when the cache cannot answer this
+  // time: then search with findPrimitivePairs.
+  bool findPairs(const std::vector<ContactBody>& bodies, const ContactPairing& pairing, double reach, Span span,
+                 double h, std::vector<PrimitivePair>& out);
+
+  const PairCacheStats& stats() const { return stats_; }
+
+ private:
+  // Features of a mesh, by kind: vertices, edges, faces (CollisionMesh ids).
+  static constexpr int kVertex = 0, kEdge = 1, kFace = 2;
+  struct BodyState {
+    bool involved = false;
+    std::vector<Vec3> anchor;     // per vertex
+    std::vector<double> radius;   // per vertex: how far from its anchor it may go (half the skin, or more for a fast one)
+    std::vector<double> drift;    // per vertex: how far from its anchor it is over the current span
+    std::vector<std::array<int, 3>> triangles;  // the topology the anchors and pairs are for
+    std::array<std::vector<Aabb>, 3> boxes;     // anchored feature boxes, grown for the trees
+    std::array<Bvh, 3> trees;
+    std::array<std::vector<char>, 3> dirty;     // features with a vertex re-anchored in this use
+    std::array<std::vector<int>, 3> dirtyIds;
+  };
+  // A cached pair: vertex and face, or two edges, and their distance at the anchors.
+  struct CachedPair {
+    int first = 0, second = 0;
+    double distance = 0.0;
+  };
+  struct Entry {
+    int a = 0, b = 0;  // bodies; a == b: self
+    double reach = 0.0;
+    std::vector<CachedPair> vfAB, vfBA;  // vfBA stays empty for self
+    std::vector<CachedPair> ee;
+  };
+
+  bool refresh(const std::vector<ContactBody>& bodies, Span span, double h);
+  bool markDirtyVertices(const std::vector<ContactBody>& bodies, Span span, double h, bool everything);
+  void updateTrees(const std::vector<ContactBody>& bodies, bool everything);
+  void search(const std::vector<ContactBody>& bodies, Entry& entry, bool everything);
+  void stepAside();
+  const Entry* find(int a, int b) const;
+
+  double skin_ = 0.0;
+  double largestReach_ = 0.0;
+  std::vector<Entry> entries_;
+  std::vector<BodyState> states_;
+  bool built_ = false;
+  int waitUses_ = 0;   // uses left before trying to build again
+  int backOff_ = 1;    // the next wait
+  PairCacheStats stats_;
+};
+
+}  // namespace weft
