@@ -16,6 +16,7 @@
 #include "command.h"
 #include "machine_info.h"
 #include "scene/scene_json.h"
+#include "sim/stage_profile.h"
 #include "sim/world.h"
 #include "util/input_error.h"
 
@@ -32,6 +33,8 @@ struct ContactBenchRow {
   double medianContactMs = 0.0;
   double maxContactMs = 0.0;
   double medianStepMs = 0.0;
+  // The median of each contact stage alone (their sum need not be the median of the total).
+  double medianStartPairsMs = 0.0, medianHeldMs = 0.0, medianCcdMs = 0.0;
   double proximityImpulsesPerStep = 0.0;
   double ccdIterationsPerStep = 0.0;
   double ccdCollisionsPerStep = 0.0;
@@ -50,18 +53,22 @@ ContactBenchRow measure(const ContactBenchOptions& options, bool self, bool reus
   ContactBenchRow row;
   row.self = self;
   row.reusePairs = reusePairs;
-  std::vector<double> contactSamples, stepSamples;
+  std::vector<double> contactSamples, stepSamples, startPairsSamples, heldSamples, ccdSamples;
   ContactStats totals;
   for (int repeat = 0; repeat < options.repeats; ++repeat) {
     World world(loadScene(scene, overrides));
     for (int s = 0; s < options.warmup; ++s) world.step();
     const ContactStats before = world.contactStats();
     for (int s = 0; s < options.steps; ++s) {
-      const double contactBefore = world.profile().totalWithPrefix("contact_");
-      const double totalBefore = world.profile().total();
+      const StageProfile before = world.profile();
       world.step();
-      contactSamples.push_back(world.profile().totalWithPrefix("contact_") - contactBefore);
-      stepSamples.push_back(world.profile().total() - totalBefore);
+      const StageProfile& after = world.profile();
+      auto took = [&](const char* prefix) { return after.totalWithPrefix(prefix) - before.totalWithPrefix(prefix); };
+      contactSamples.push_back(took("contact_"));
+      startPairsSamples.push_back(took("contact_start_pairs"));
+      heldSamples.push_back(took("contact_held"));
+      ccdSamples.push_back(took("contact_ccd"));
+      stepSamples.push_back(after.total() - before.total());
     }
     const ContactStats& after = world.contactStats();
     totals.proximityImpulses += after.proximityImpulses - before.proximityImpulses;
@@ -75,6 +82,9 @@ ContactBenchRow measure(const ContactBenchOptions& options, bool self, bool reus
   row.medianContactMs = median(contactSamples);
   row.maxContactMs = *std::max_element(contactSamples.begin(), contactSamples.end());
   row.medianStepMs = median(stepSamples);
+  row.medianStartPairsMs = median(startPairsSamples);
+  row.medianHeldMs = median(heldSamples);
+  row.medianCcdMs = median(ccdSamples);
   row.proximityImpulsesPerStep = totals.proximityImpulses / samples;
   row.ccdIterationsPerStep = totals.ccdIterations / samples;
   row.ccdCollisionsPerStep = totals.ccdCollisions / samples;
@@ -88,15 +98,15 @@ ContactBenchRow measure(const ContactBenchOptions& options, bool self, bool reus
 int runContactBench(const ContactBenchOptions& options) {
   std::vector<ContactBenchRow> rows;
   try {
-    std::printf("%-6s %-7s %8s %16s %14s %14s %12s %10s %10s %10s\n", "self", "reuse", "vertices", "contact ms/step", "max ms/step",
-                "whole ms/step", "prox imp/st", "ccd it/st", "ccd col/st", "zones/st");
+    std::printf("%-6s %-7s %8s %16s %14s %8s %8s %8s %14s %12s %10s %10s %10s\n", "self", "reuse", "vertices",
+                "contact ms/step", "max ms/step", "start", "held", "ccd", "whole ms/step", "prox imp/st", "ccd it/st", "ccd col/st", "zones/st");
     // Each case with the pair cache and without it, one after the other: the ratio is what to
     // read on a machine whose speed drifts.
     for (const auto& [self, reusePairs] : {std::pair{false, true}, {false, false}, {true, true}, {true, false}}) {
       const ContactBenchRow r = measure(options, self, reusePairs);
-      std::printf("%-6s %-7s %8d %16.3f %14.3f %14.3f %12.1f %10.2f %10.2f %10.2f%s\n", r.self ? "on" : "off",
-                  r.reusePairs ? "on" : "off", r.vertices,
-                  r.medianContactMs, r.maxContactMs, r.medianStepMs, r.proximityImpulsesPerStep, r.ccdIterationsPerStep,
+      std::printf("%-6s %-7s %8d %16.3f %14.3f %8.3f %8.3f %8.3f %14.3f %12.1f %10.2f %10.2f %10.2f%s\n",
+                  r.self ? "on" : "off", r.reusePairs ? "on" : "off", r.vertices, r.medianContactMs, r.maxContactMs,
+                  r.medianStartPairsMs, r.medianHeldMs, r.medianCcdMs, r.medianStepMs, r.proximityImpulsesPerStep, r.ccdIterationsPerStep,
                   r.ccdCollisionsPerStep, r.impactZoneStepShare, r.clean ? "" : "  (unresolved steps!)");
       std::fflush(stdout);
       rows.push_back(r);
@@ -110,11 +120,13 @@ int runContactBench(const ContactBenchOptions& options) {
                              "sheet-on-sphere, " + std::to_string(options.resolution) + "^2, " +
                                  std::to_string(options.warmup) + " warm-up steps, " + std::to_string(options.steps) +
                                  " timed steps x " + std::to_string(options.repeats) + " repeats");
-  csv << "self_collision,reuse_pairs,vertices,median_contact_ms_per_step,max_contact_ms_per_step,median_step_ms,"
+  csv << "self_collision,reuse_pairs,vertices,median_contact_ms_per_step,max_contact_ms_per_step,"
+         "median_start_pairs_ms,median_held_ms,median_ccd_ms,median_step_ms,"
          "proximity_impulses_per_step,ccd_iterations_per_step,ccd_collisions_per_step,impact_zone_steps_per_step,"
          "resolved\n";
   for (const auto& r : rows) {
     csv << (r.self ? "on" : "off") << "," << (r.reusePairs ? "on" : "off") << "," << r.vertices << "," << r.medianContactMs << "," << r.maxContactMs << ","
+        << r.medianStartPairsMs << "," << r.medianHeldMs << "," << r.medianCcdMs << ","
         << r.medianStepMs << "," << r.proximityImpulsesPerStep << "," << r.ccdIterationsPerStep << ","
         << r.ccdCollisionsPerStep << "," << r.impactZoneStepShare << "," << (r.clean ? "true" : "false") << "\n";
   }

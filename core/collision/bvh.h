@@ -46,6 +46,42 @@ class Bvh {
   void overlappingPairs(const Bvh& other, const std::function<void(int, int)>& visit) const;
   // Every pair (i, j), i < j, of leaves of this tree whose boxes overlap.
   void selfOverlappingPairs(const std::function<void(int, int)>& visit) const;
+  // Every leaf i whose box overlaps `box`, in the tree's order. (A template: it runs for a few
+  // boxes at a time, where the call through a std::function would be a large share.)
+  template <class Visit>
+  void overlapping(const Aabb& box, Visit&& visit) const {
+    if (nodes_.empty()) return;
+    int stack[64];
+    int size = 0;
+    std::vector<int> spill;  // only for trees far deeper than a median split builds
+    auto push = [&](int node) {
+      if (size < 64) {
+        stack[size++] = node;
+      } else {
+        spill.push_back(node);
+      }
+    };
+    push(0);
+    while (size > 0 || !spill.empty()) {
+      int node;
+      if (!spill.empty()) {
+        node = spill.back();
+        spill.pop_back();
+      } else {
+        node = stack[--size];
+      }
+      const Node& n = nodes_[node];
+      if (!n.box.overlaps(box)) continue;
+      if (n.isLeaf()) {
+        for (int s = n.first; s < n.first + n.count; ++s) {
+          if (slotBoxes_[s].overlaps(box)) visit(leafOrder_[s]);
+        }
+      } else {
+        push(n.first);
+        push(node + 1);
+      }
+    }
+  }
 
  private:
   // A node of the tree. Nodes are stored depth first: an internal node's left child is the next

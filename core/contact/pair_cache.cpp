@@ -154,9 +154,14 @@ bool PairCache::refresh(const std::vector<ContactBody>& bodies, Span span, doubl
       states_[s].radius.assign(n, 0.0);
     }
   }
-  if (!markDirtyVertices(bodies, span, h, everything)) {
+  const long long reanchored = markDirtyVertices(bodies, span, h, everything);
+  if (reanchored < 0) {
     stepAside();
     return false;
+  }
+  if (reanchored == 0 && !everything) {
+    backOff_ = 1;
+    return true;  // every vertex in its ball: the pairs stand
   }
   updateTrees(bodies, everything);
   for (Entry& entry : entries_) search(bodies, entry, everything);
@@ -169,7 +174,7 @@ bool PairCache::refresh(const std::vector<ContactBody>& bodies, Span span, doubl
   return true;
 }
 
-bool PairCache::markDirtyVertices(const std::vector<ContactBody>& bodies, Span span, double h, bool everything) {
+long long PairCache::markDirtyVertices(const std::vector<ContactBody>& bodies, Span span, double h, bool everything) {
   const double halfSkin = 0.5 * skin_;
   long long total = 0, dirty = 0;
   for (std::size_t s = 0; s < states_.size(); ++s) {
@@ -192,15 +197,20 @@ bool PairCache::markDirtyVertices(const std::vector<ContactBody>& bodies, Span s
       if (!everything && state.drift[i] <= state.radius[i]) continue;
       dirtyVertex[i] = 1;
       ++dirty;
-      if (!x0[i].allFinite() || !x1[i].allFinite()) return false;
+      if (!x0[i].allFinite() || !x1[i].allFinite()) return -1;
       // The (predicted) path of the step; the new ball holds all of it.
       const Vec3 end = span == Span::Start && body.v ? Vec3(x0[i] + h * (*body.v)[i]) : x1[i];
       const double travel = (end - x0[i]).norm();
-      if (travel <= 2.0 * halfSkin) {
+      if (travel == 0.0) {
+        // Not moving (a static obstacle, a pinned vertex): any motion at all re-anchors it, and
+        // pairs with it need no room for its drift.
+        state.anchor[i] = x0[i];
+        state.radius[i] = 0.0;
+      } else if (travel <= 2.0 * halfSkin) {
         // Half a skin ahead of the start, so that the start lies on the back of the ball: a vertex
         // still moving that way stays inside for longest. (On the contact benchmark this re-anchors
         // less often than a ball centred on the path, and both of its cases ran 13-15% faster.)
-        state.anchor[i] = travel > 0.0 ? Vec3(x0[i] + (halfSkin / travel) * (end - x0[i])) : x0[i];
+        state.anchor[i] = x0[i] + (halfSkin / travel) * (end - x0[i]);
         state.radius[i] = halfSkin;
       } else {
         // Faster than the skin: a ball around this path only, searched again next time.
@@ -213,10 +223,10 @@ bool PairCache::markDirtyVertices(const std::vector<ContactBody>& bodies, Span s
     }
   }
   if (!everything) {
-    if (static_cast<double>(dirty) > kMostReanchoredShare * static_cast<double>(total)) return false;
+    if (static_cast<double>(dirty) > kMostReanchoredShare * static_cast<double>(total)) return -1;
     stats_.reanchoredVertices += dirty;
   }
-  return true;
+  return dirty;
 }
 
 void PairCache::updateTrees(const std::vector<ContactBody>& bodies, bool everything) {
@@ -248,17 +258,26 @@ void PairCache::updateTrees(const std::vector<ContactBody>& bodies, bool everyth
       }
       if (everything) {
         state.trees[kind].build(state.boxes[kind]);
+        state.stale[kind] = false;
       } else if (!dirtyIds.empty()) {
-        state.trees[kind].refit(state.boxes[kind]);
+        state.stale[kind] = true;  // refitted if a query needs the whole tree (fittedTree)
       }
     }
   }
 }
 
+const Bvh& PairCache::fittedTree(BodyState& state, int kind) {
+  if (state.stale[kind]) {
+    state.trees[kind].refit(state.boxes[kind]);
+    state.stale[kind] = false;
+  }
+  return state.trees[kind];
+}
+
 void PairCache::search(const std::vector<ContactBody>& bodies, Entry& entry, bool everything) {
   const bool self = entry.a == entry.b;
-  const BodyState& A = states_[entry.a];
-  const BodyState& B = states_[entry.b];
+  BodyState& A = states_[entry.a];
+  BodyState& B = states_[entry.b];
   const CollisionMesh& meshA = *bodies[entry.a].topology;
   const CollisionMesh& meshB = *bodies[entry.b].topology;
   const double slack = kRoundingSlack * (largestReach_ + skin_);
@@ -268,7 +287,7 @@ void PairCache::search(const std::vector<ContactBody>& bodies, Entry& entry, boo
   // re-anchored feature (every pair when searching everything) whose trees' boxes overlap, that
   // `admit` lets through, and whose distance at the anchors is within the reach and both radii.
   std::vector<CachedPair> found;
-  auto search = [&](const BodyState& P, const CollisionMesh& meshP, int kindP, const BodyState& Q,
+  auto search = [&](BodyState& P, const CollisionMesh& meshP, int kindP, BodyState& Q,
                     const CollisionMesh& meshQ, int kindQ, auto admit) {
     found.clear();
     auto measure = [&](int i, int j) {
@@ -288,24 +307,21 @@ void PairCache::search(const std::vector<ContactBody>& bodies, Entry& entry, boo
     if (everything) {
       P.trees[kindP].overlappingPairs(Q.trees[kindQ], measure);
     } else {
-      auto dirtyTree = [](const BodyState& state, int kind) {
-        std::vector<Aabb> boxes;
-        boxes.reserve(state.dirtyIds[kind].size());
-        for (int id : state.dirtyIds[kind]) boxes.push_back(state.boxes[kind][id]);
-        Bvh tree;
-        tree.build(boxes);
-        return tree;
-      };
+      // Each re-anchored feature's box against the other side's whole tree.
       if (!P.dirtyIds[kindP].empty()) {
-        dirtyTree(P, kindP).overlappingPairs(Q.trees[kindQ], [&](int k, int j) { measure(P.dirtyIds[kindP][k], j); });
+        const Bvh& treeQ = fittedTree(Q, kindQ);
+        for (int i : P.dirtyIds[kindP]) treeQ.overlapping(P.boxes[kindP][i], [&](int j) { measure(i, j); });
       }
       // Pairs with a re-anchored feature of Q only (those with both were found above). Against
       // itself (edges of a cloth against its edges) the query above already met every pair.
       const bool sameTree = &P == &Q && kindP == kindQ;
       if (!Q.dirtyIds[kindQ].empty() && !sameTree) {
-        dirtyTree(Q, kindQ).overlappingPairs(P.trees[kindP], [&](int k, int i) {
-          if (!P.dirty[kindP][i]) measure(i, Q.dirtyIds[kindQ][k]);
-        });
+        const Bvh& treeP = fittedTree(P, kindP);
+        for (int j : Q.dirtyIds[kindQ]) {
+          treeP.overlapping(Q.boxes[kindQ][j], [&](int i) {
+            if (!P.dirty[kindP][i]) measure(i, j);
+          });
+        }
       }
     }
     std::sort(found.begin(), found.end(), byIds);

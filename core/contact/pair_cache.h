@@ -71,6 +71,7 @@ class PairCache {
     std::vector<std::array<int, 3>> triangles;  // the topology the anchors and pairs are for
     std::array<std::vector<Aabb>, 3> boxes;     // anchored feature boxes, grown for the trees
     std::array<Bvh, 3> trees;
+    std::array<bool, 3> stale{};                // boxes changed since the tree was fitted (refit when queried)
     std::array<std::vector<char>, 3> dirty;     // features with a vertex re-anchored in this use
     std::array<std::vector<int>, 3> dirtyIds;
   };
@@ -87,9 +88,14 @@ class PairCache {
   };
 
   bool refresh(const std::vector<ContactBody>& bodies, Span span, double h);
-  bool markDirtyVertices(const std::vector<ContactBody>& bodies, Span span, double h, bool everything);
+  // Re-anchors the vertices that left their balls (every vertex when `everything`); returns how
+  // many, or -1 when the cache cannot answer (a non-finite position, a path no ball holds, or
+  // too many vertices on the move).
+  long long markDirtyVertices(const std::vector<ContactBody>& bodies, Span span, double h, bool everything);
   void updateTrees(const std::vector<ContactBody>& bodies, bool everything);
   void search(const std::vector<ContactBody>& bodies, Entry& entry, bool everything);
+  // The tree of a body's features of one kind, refitted first if its boxes changed.
+  static const Bvh& fittedTree(BodyState& state, int kind);
   void stepAside();
   const Entry* find(int a, int b) const;
 
