@@ -129,6 +129,7 @@ bool runCollisionPass(std::vector<ContactBody>& bodies, const ContactPairing& pa
                       const ContactStepSettings& settings, const std::vector<int>& bodyToWorldIndex,
                       PairCache* cache, CandidatePairs& scratch, std::vector<PrimitivePair>& pairs, PassCounts& counts,
                       std::vector<SharpContactRecord>& records) {
+  std::vector<PrimitivePair> crossing;
   for (int iteration = 0; iteration < settings.ccdIterations; ++iteration) {
     ++counts.ccdIterations;
     long long collisions = settings.ground != nullptr ? stopAtGround(bodies, settings) : 0;
@@ -136,7 +137,16 @@ bool runCollisionPass(std::vector<ContactBody>& bodies, const ContactPairing& pa
     if (!cache || !cache->findPairs(bodies, pairing, 0.0, PairCache::Span::WholeStep, settings.h, pairs)) {
       findPrimitivePairs(bodies, pairing, 0.0, scratch, pairs);
     }
+    // Only the pairs that cross in the state the iteration starts from are stopped in it: those
+    // are the same whichever search listed them (the pair cache lists more candidates than a
+    // fresh search), so the result never depends on the search. A collision that an impulse of
+    // this iteration causes is the next iteration's.
+    crossing.clear();
+    Collision hit;
     for (const PrimitivePair& pair : pairs) {
+      if (detectCrossing(bodies, pair, hit)) crossing.push_back(pair);
+    }
+    for (const PrimitivePair& pair : crossing) {
       Collision c;
       if (!detectCollision(bodies, pair, settings, c)) continue;
       const ImpulseResult impulse =

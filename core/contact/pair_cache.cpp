@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iterator>
+#include <limits>
 
 #include "collision/closest_points.h"
 
@@ -44,6 +45,25 @@ double largestOf(const std::vector<double>& values, const FeatureVertices& f) {
   double largest = values[f.ids[0]];
   for (int k = 1; k < f.count; ++k) largest = std::max(largest, values[f.ids[k]]);
   return largest;
+}
+
+// A lower bound on the distance between two features: the gap between their shadows on the line
+// through their centroids (a projection never lengthens a distance). It costs a fraction of the
+// closest points, and rules out most of a cloth's in-plane neighbours, which crowd the boxes of
+// a self-collision search.
+double gapAlongCentres(const std::vector<Vec3>& xf, const FeatureVertices& f, const std::vector<Vec3>& xg,
+                       const FeatureVertices& g) {
+  Vec3 cf = Vec3::Zero(), cg = Vec3::Zero();
+  for (int k = 0; k < f.count; ++k) cf += xf[f.ids[k]];
+  for (int k = 0; k < g.count; ++k) cg += xg[g.ids[k]];
+  const Vec3 axis = cg / g.count - cf / f.count;
+  const double length = axis.norm();
+  if (!(length > 0.0)) return 0.0;
+  double farthestF = -std::numeric_limits<double>::infinity();
+  double nearestG = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < f.count; ++k) farthestF = std::max(farthestF, axis.dot(xf[f.ids[k]]));
+  for (int k = 0; k < g.count; ++k) nearestG = std::min(nearestG, axis.dot(xg[g.ids[k]]));
+  return (nearestG - farthestF) / length;
 }
 
 }  // namespace
@@ -294,13 +314,16 @@ void PairCache::search(const std::vector<ContactBody>& bodies, Entry& entry, boo
       if (!admit(i, j)) return;
       const FeatureVertices f = featureVertices(meshP, kindP, i);
       const FeatureVertices g = featureVertices(meshQ, kindQ, j);
+      const double keep = entry.reach + largestOf(P.radius, f) + largestOf(Q.radius, g) + slack;
+      // (The bound's own rounding is far below the slack.)
+      if (gapAlongCentres(P.anchor, f, Q.anchor, g) > keep) return;
       const double distance =
           kindP == kVertex
               ? closestPointOnTriangle(P.anchor[f.ids[0]], Q.anchor[g.ids[0]], Q.anchor[g.ids[1]], Q.anchor[g.ids[2]])
                     .distance
               : closestSegmentSegment(P.anchor[f.ids[0]], P.anchor[f.ids[1]], Q.anchor[g.ids[0]], Q.anchor[g.ids[1]])
                     .distance;
-      if (distance < entry.reach + largestOf(P.radius, f) + largestOf(Q.radius, g) + slack) {
+      if (distance < keep) {
         found.push_back({i, j, distance});
       }
     };
