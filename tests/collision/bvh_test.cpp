@@ -83,6 +83,27 @@ TEST(Bvh, TreeAgainstTreeFindsExactlyTheOverlappingPairs) {
   }
 }
 
+TEST(Bvh, BoxQueryFindsExactlyTheOverlappingLeaves) {
+  std::mt19937 rng(5);
+  std::size_t reported = 0;
+  for (int count : {0, 1, 7, 900, 2000}) {
+    const std::vector<Aabb> boxes = randomBoxes(count, rng, 0.04, count == 2000);
+    const Bvh tree = builtOver(boxes);
+    for (const Aabb& query : randomBoxes(40, rng, 0.1)) {
+      std::vector<int> found;
+      tree.overlapping(query, [&](int i) { found.push_back(i); });
+      std::sort(found.begin(), found.end());
+      std::vector<int> expected;
+      for (int i = 0; i < count; ++i) {
+        if (boxes[i].overlaps(query)) expected.push_back(i);
+      }
+      EXPECT_EQ(found, expected) << count << " boxes";
+      reported += found.size();
+    }
+  }
+  EXPECT_GT(reported, 100u);  // the queries met boxes
+}
+
 TEST(Bvh, SelfQueryFindsEachOverlappingPairOnceWithTheSmallerIdFirst) {
   std::mt19937 rng(12);
   for (int count : {0, 1, 2, 4, 5, 9, 100, 2000}) {
