@@ -98,6 +98,11 @@ nlohmann::ordered_json runMetrics(const World& world, double wallSeconds) {
         {"unresolved_steps", c.unresolvedSteps},
         {"sharp_contacts", c.sharpContacts},
         {"held_vertices", c.heldVertices},
+        {"pair_cache",
+         {{"uses", c.pairCache.uses},
+          {"served", c.pairCache.served},
+          {"full_builds", c.pairCache.fullBuilds},
+          {"reanchored_vertices", c.pairCache.reanchoredVertices}}},
     };
   }
   if (world.tearingRuns()) {

@@ -92,6 +92,14 @@ void ContactStage::refreshBodies(std::vector<Cloth>& cloths, const std::vector<s
   }
 }
 
+void ContactStage::countPairCache(const PairCacheStats& before) {
+  const PairCacheStats& now = pairCache_.stats();
+  stats_.pairCache.uses += now.uses - before.uses;
+  stats_.pairCache.served += now.served - before.served;
+  stats_.pairCache.fullBuilds += now.fullBuilds - before.fullBuilds;
+  stats_.pairCache.reanchoredVertices += now.reanchoredVertices - before.reanchoredVertices;
+}
+
 void ContactStage::clothTopologyChanged(int cloth, const ClothMesh& mesh, const TopologyChange& change) {
   CollisionMesh& topology = clothTopology_[cloth];
   if (topology.triangles.empty()) return;  // not built yet: refreshBodies builds it
@@ -113,6 +121,7 @@ void ContactStage::resolve(std::vector<Cloth>& cloths, const std::vector<std::ve
   settings.impactZoneIterations = spec_.impactZoneIterations;
 
   PassCounts counts;
+  const PairCacheStats cacheBefore = pairCache_.stats();
   {
     StageTimer timer(profile, "contact_proximity");
     runProximityPass(bodies_, nearPairs_, settings, counts);
@@ -128,6 +137,7 @@ void ContactStage::resolve(std::vector<Cloth>& cloths, const std::vector<std::ve
     ++stats_.impactZoneSteps;
     runImpactZonePass(bodies_, pairing_, settings, scratch_, pairs_, counts);
   }
+  countPairCache(cacheBefore);
   ++stats_.steps;
   stats_.proximityImpulses += counts.proximityImpulses;
   stats_.groundContacts += counts.groundContacts;
@@ -149,6 +159,7 @@ void ContactStage::prepare(std::vector<Cloth>& cloths, const std::vector<std::ve
     // cloth is never held, so those pairs need only the thickness (a smaller margin finds far
     // fewer pairs in a sheet, whose neighbouring triangles all nearly touch).
     StageTimer timer(profile, "contact_start_pairs");
+    const PairCacheStats cacheBefore = pairCache_.stats();
     for (ContactBody& body : bodies_) body.swept.x1 = body.x0;
     auto findStartPairs = [&](const ContactPairing& pairing, double reach) {
       if (!spec_.reusePairs || !pairCache_.findPairs(bodies_, pairing, reach, PairCache::Span::Start, h, startPairs_)) {
@@ -163,6 +174,7 @@ void ContactStage::prepare(std::vector<Cloth>& cloths, const std::vector<std::ve
       nearPairs_.insert(nearPairs_.end(), nearClothPairs_.begin(), nearClothPairs_.end());
     }
     for (ContactBody& body : bodies_) body.swept.x1 = body.x1;
+    countPairCache(cacheBefore);
   }
   if (!holdsVertices_) return;
   StageTimer timer(profile, "contact_held");

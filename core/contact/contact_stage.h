@@ -36,6 +36,7 @@ struct ContactStats {
   long long unresolvedSteps = 0;     // steps where pass 3 hit its bound with collisions left
   long long sharpContacts = 0;       // sharp-tool records made
   long long heldVertices = 0;        // cloth vertices held by obstacles or the ground in the solve (summed over steps)
+  PairCacheStats pairCache;          // the near pairs kept from step to step (pair_cache.h)
 };
 
 class ContactStage {
@@ -76,6 +77,8 @@ class ContactStage {
   const std::vector<SharpContactRecord>& sharpRecords() const { return records_; }
 
  private:
+  // Adds what the pair cache did since `before` to the statistics.
+  void countPairCache(const PairCacheStats& before);
   void refreshBodies(std::vector<Cloth>& cloths, const std::vector<std::vector<Vec3>>& startPositions,
                      std::vector<Obstacle>& obstacles);
 

@@ -308,6 +308,9 @@ TEST(ContactScenes, ReusingNearPairsGivesTheSameSimulationBitForBit) {
     EXPECT_EQ(cached.contactStats().ccdCollisions, fresh.contactStats().ccdCollisions) << c.scene;
     EXPECT_EQ(cached.contactStats().proximityImpulses, fresh.contactStats().proximityImpulses) << c.scene;
     EXPECT_GT(cached.contactStats().ccdCollisions + cached.contactStats().proximityImpulses, 0) << c.scene;
+    // The cache did answer (most uses), and only when asked to.
+    EXPECT_GT(cached.contactStats().pairCache.served, cached.contactStats().pairCache.uses / 2) << c.scene;
+    EXPECT_EQ(fresh.contactStats().pairCache.uses, 0) << c.scene;
   }
 }
 
