@@ -49,8 +49,8 @@ double largestOf(const std::vector<double>& values, const FeatureVertices& f) {
 
 // A lower bound on the distance between two features: the gap between their shadows on the line
 // through their centroids (a projection never lengthens a distance). It costs a fraction of the
-// closest points, and rules out most of a cloth's in-plane neighbours, which crowd the boxes of
-// a self-collision search.
+// closest points and rules out some of the in-plane neighbours that crowd a self-collision
+// search's boxes (on the contact benchmark it saved a tenth of that search).
 double gapAlongCentres(const std::vector<Vec3>& xf, const FeatureVertices& f, const std::vector<Vec3>& xg,
                        const FeatureVertices& g) {
   Vec3 cf = Vec3::Zero(), cg = Vec3::Zero();

@@ -3,17 +3,19 @@
 // to step, so that a cloth resting on an obstacle or on itself is not searched afresh several
 // times a step.
 //
-// Each vertex has an anchor: a position it stays within half the skin of. The cache holds every
-// pair of features (vertex-face, edge-edge) whose distance, measured with all their vertices at
-// their anchors, is below the body pair's reach plus the skin. While every vertex's start and
-// end of step stay within half the skin of its anchor, so does every point of its path (the ball
-// is convex), and a pair that comes within the reach anywhere in the step was within the reach
-// plus the skin at the anchors: it is in the cache. The cache is then exact, not a heuristic.
+// Each vertex has an anchor and a ball around it (radius: half the skin; none for a vertex that
+// does not move; half its path for one faster than the skin). The cache holds every pair of
+// features (vertex-face, edge-edge) whose distance, with all their vertices at their anchors, is
+// below the body pair's reach plus both features' radii. While every vertex's start and end of
+// step stay in its ball, so does every point of its path (a ball is convex), and a pair that
+// comes within the reach anywhere in the step is in the cache: it is exact, not a heuristic.
+// Each use lets through the pairs whose anchored distance, less how far their vertices drifted
+// from their anchors, can be within the reach.
 //
 // A vertex that leaves its ball is re-anchored, and only the pairs of the features around it are
-// searched again (its triangles against the other bodies' trees of anchored boxes). When too many
-// vertices move at once (a falling cloth, a fast tool) the cache steps aside for a while and the
-// callers search afresh (findPrimitivePairs), with exponential back-off before it tries again.
+// searched again (each such feature against the other body's tree of anchored feature boxes).
+// When too many vertices move at once (a falling cloth, a fast tool) the cache steps aside and
+// the callers search afresh (findPrimitivePairs), with exponential back-off before it tries again.
 //
 // The pairs come out in the order findPrimitivePairs gives them (body pairs in pairing order; in
 // each, vertex-face pairs by vertex then face, then face-vertex pairs, then edge-edge pairs), so
@@ -37,7 +39,7 @@ struct PairCacheStats {
 
 class PairCache {
  public:
-  // skin (m) > 0: how far a vertex may wander from its anchor, twice over.
+  // skin (m) > 0: twice the radius of a moving vertex's ball.
   explicit PairCache(double skin = 0.0) : skin_(skin) {}
 
   // The body pairs of `pairing` will be asked for pairs within up to `reach` (m).
@@ -89,8 +91,8 @@ class PairCache {
 
   bool refresh(const std::vector<ContactBody>& bodies, Span span, double h);
   // Re-anchors the vertices that left their balls (every vertex when `everything`); returns how
-  // many, or -1 when the cache cannot answer (a non-finite position, a path no ball holds, or
-  // too many vertices on the move).
+  // many, or -1 when the cache cannot answer (a non-finite position, or too many vertices on the
+  // move).
   long long markDirtyVertices(const std::vector<ContactBody>& bodies, Span span, double h, bool everything);
   void updateTrees(const std::vector<ContactBody>& bodies, bool everything);
   void search(const std::vector<ContactBody>& bodies, Entry& entry, bool everything);
