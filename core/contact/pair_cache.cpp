@@ -18,6 +18,9 @@ constexpr int kLongestWait = 64;
 // Rounding of the distances compared, relative to the reach and skin: a pair is kept, and let
 // through, when it is within this much more than the bound says.
 constexpr double kRoundingSlack = 1e-9;
+// Below this fraction of the reach and skin apart at the anchors, a pair's closest points give no
+// direction to bound its distance along (as for the near pairs' "touching", near_pairs.h).
+constexpr double kReliableApart = 1e-3;
 
 bool isCorner(const std::array<int, 3>& triangle, int v) {
   return triangle[0] == v || triangle[1] == v || triangle[2] == v;
@@ -118,6 +121,7 @@ bool PairCache::findPairs(const std::vector<ContactBody>& bodies, const ContactP
   // vertices drifted from their anchors: only pairs that this does not rule out are let through
   // (the callers test them exactly).
   const double limit = reach + kRoundingSlack * (largestReach_ + skin_);
+  const bool wholeStep = span == Span::WholeStep;
   auto emit = [&](const Entry& entry, const std::vector<CachedPair>& pairs, bool vertexFace, bool reversed) {
     const int bodyA = reversed ? entry.b : entry.a;
     const int bodyB = reversed ? entry.a : entry.b;
@@ -128,10 +132,30 @@ bool PairCache::findPairs(const std::vector<ContactBody>& bodies, const ContactP
     const int kindA = vertexFace ? kVertex : kEdge;
     const int kindB = vertexFace ? kFace : kEdge;
     const PairKind kind = vertexFace ? PairKind::VertexFace : PairKind::EdgeEdge;
+    const std::vector<Vec3>& a0 = *bodies[bodyA].x0;
+    const std::vector<Vec3>& a1 = wholeStep ? *bodies[bodyA].x1 : a0;
+    const std::vector<Vec3>& b0 = *bodies[bodyB].x0;
+    const std::vector<Vec3>& b1 = wholeStep ? *bodies[bodyB].x1 : b0;
     for (const CachedPair& p : pairs) {
-      const double drift = largestOf(A.drift, featureVertices(meshA, kindA, p.first)) +
-                           largestOf(B.drift, featureVertices(meshB, kindB, p.second));
-      if (p.distance - drift < limit) out.push_back({kind, bodyA, p.first, bodyB, p.second});
+      const FeatureVertices f = featureVertices(meshA, kindA, p.first);
+      const FeatureVertices g = featureVertices(meshB, kindB, p.second);
+      if (!(p.distance - largestOf(A.drift, f) - largestOf(B.drift, g) < limit)) continue;
+      // At the anchors, the first feature lies beyond the plane through its closest point normal
+      // to `apart`, the second short of the one through its own (both are convex): the gap between
+      // their shadows on `apart`, over the span, bounds their distance. A vertex sliding along a
+      // surface keeps this gap, where its drift alone would not.
+      if (p.apart != Vec3::Zero()) {
+        double nearestA = std::numeric_limits<double>::infinity();
+        double farthestB = -std::numeric_limits<double>::infinity();
+        for (int k = 0; k < f.count; ++k) {
+          nearestA = std::min({nearestA, p.apart.dot(a0[f.ids[k]]), p.apart.dot(a1[f.ids[k]])});
+        }
+        for (int k = 0; k < g.count; ++k) {
+          farthestB = std::max({farthestB, p.apart.dot(b0[g.ids[k]]), p.apart.dot(b1[g.ids[k]])});
+        }
+        if (!(nearestA - farthestB < limit)) continue;
+      }
+      out.push_back({kind, bodyA, p.first, bodyB, p.second});
     }
   };
   for (const auto& [a, b] : pairing.between) {
@@ -317,14 +341,25 @@ void PairCache::search(const std::vector<ContactBody>& bodies, Entry& entry, boo
       const double keep = entry.reach + largestOf(P.radius, f) + largestOf(Q.radius, g) + slack;
       // (The bound's own rounding is far below the slack.)
       if (gapAlongCentres(P.anchor, f, Q.anchor, g) > keep) return;
-      const double distance =
-          kindP == kVertex
-              ? closestPointOnTriangle(P.anchor[f.ids[0]], Q.anchor[g.ids[0]], Q.anchor[g.ids[1]], Q.anchor[g.ids[2]])
-                    .distance
-              : closestSegmentSegment(P.anchor[f.ids[0]], P.anchor[f.ids[1]], Q.anchor[g.ids[0]], Q.anchor[g.ids[1]])
-                    .distance;
+      double distance = 0.0;
+      Vec3 difference;  // from the closest point of g to that of f
+      if (kindP == kVertex) {
+        const PointTriangleClosest c = closestPointOnTriangle(P.anchor[f.ids[0]], Q.anchor[g.ids[0]],
+                                                              Q.anchor[g.ids[1]], Q.anchor[g.ids[2]]);
+        distance = c.distance;
+        difference = P.anchor[f.ids[0]] - c.point;
+      } else {
+        const Vec3 &p0 = P.anchor[f.ids[0]], &p1 = P.anchor[f.ids[1]];
+        const Vec3 &q0 = Q.anchor[g.ids[0]], &q1 = Q.anchor[g.ids[1]];
+        const SegmentSegmentClosest c = closestSegmentSegment(p0, p1, q0, q1);
+        distance = c.distance;
+        difference = (p0 + c.s * (p1 - p0)) - (q0 + c.t * (q1 - q0));
+      }
       if (distance < keep) {
-        found.push_back({i, j, distance});
+        const double length = difference.norm();
+        // (Nearly touching, the direction is mostly rounding: no bound is taken from it.)
+        const bool reliable = length > kReliableApart * (entry.reach + skin_);
+        found.push_back({i, j, distance, reliable ? Vec3(difference / length) : Vec3::Zero()});
       }
     };
     if (everything) {

@@ -78,9 +78,12 @@ class PairCache {
     std::array<std::vector<int>, 3> dirtyIds;
   };
   // A cached pair: vertex and face, or two edges, and their distance at the anchors.
+  // A cached pair: vertex and face, or two edges; their distance at the anchors, and the unit
+  // direction from the second's closest point to the first's (zero when they touch there).
   struct CachedPair {
     int first = 0, second = 0;
     double distance = 0.0;
+    Vec3 apart = Vec3::Zero();
   };
   struct Entry {
     int a = 0, b = 0;  // bodies; a == b: self
