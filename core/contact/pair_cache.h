@@ -9,8 +9,9 @@
 // below the body pair's reach plus both features' radii. While every vertex's start and end of
 // step stay in its ball, so does every point of its path (a ball is convex), and a pair that
 // comes within the reach anywhere in the step is in the cache: it is exact, not a heuristic.
-// Each use lets through the pairs whose anchored distance, less how far their vertices drifted
-// from their anchors, can be within the reach.
+// Each use lets through the pairs that two lower bounds on their distance cannot rule out: the
+// anchored distance less how far their vertices drifted from their anchors, and the gap between
+// the features' shadows on the direction between their anchored closest points.
 //
 // A vertex that leaves its ball is re-anchored, and only the pairs of the features around it are
 // searched again (each such feature against the other body's tree of anchored feature boxes).
