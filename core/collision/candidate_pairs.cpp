@@ -38,10 +38,6 @@ int overlapGrownFirst(const Aabb& a, const Aabb& b, double margin) {
          ((a.lo.z() - margin) <= b.hi.z()) & (b.lo.z() <= (a.hi.z() + margin));
 }
 
-bool isCorner(const std::array<int, 3>& triangle, int v) {
-  return triangle[0] == v || triangle[1] == v || triangle[2] == v;
-}
-
 // Evaluated without branches: nine comparisons are cheaper than the mispredictions of
 // short-circuiting them on every triangle pair the BVH reports.
 bool shareCorner(const std::array<int, 3>& s, const std::array<int, 3>& t) {
@@ -50,10 +46,6 @@ bool shareCorner(const std::array<int, 3>& s, const std::array<int, 3>& t) {
     for (int b : t) shared |= a == b;
   }
   return shared != 0;
-}
-
-bool shareVertex(const std::array<int, 2>& e, const std::array<int, 2>& f) {
-  return e[0] == f[0] || e[0] == f[1] || e[1] == f[0] || e[1] == f[1];
 }
 
 // Exact culling by fixed planes (FixedPlane) ------------------------------------------------------

@@ -21,6 +21,15 @@ struct CollisionMesh {
   std::vector<std::vector<int>> trianglesAround;  // triangles using each vertex, ascending
 };
 
+// Vertex v is a corner of `triangle`.
+inline bool isCorner(const std::array<int, 3>& triangle, int v) {
+  return triangle[0] == v || triangle[1] == v || triangle[2] == v;
+}
+// Edges e and f (vertex pairs) share a vertex.
+inline bool shareVertex(const std::array<int, 2>& e, const std::array<int, 2>& f) {
+  return e[0] == f[0] || e[0] == f[1] || e[1] == f[0] || e[1] == f[1];
+}
+
 // Builds edges and ownership from the triangles. Deterministic: edges are numbered in order of
 // first appearance while walking triangles in id order.
 CollisionMesh makeCollisionMesh(int vertexCount, const std::vector<std::array<int, 3>>& triangles);

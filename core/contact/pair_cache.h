@@ -45,7 +45,6 @@ class PairCache {
 
   // The body pairs of `pairing` will be asked for pairs within up to `reach` (m).
   void add(const ContactPairing& pairing, double reach);
-  bool empty() const { return entries_.empty(); }
 
   // When, in the step, the bodies' positions are read.
   enum class Span {
