@@ -1,7 +1,6 @@
 #include "contact/held_contacts.h"
 
 #include <algorithm>
-#include <map>
 #include <tuple>
 
 #include <Eigen/Geometry>
@@ -20,7 +19,8 @@ void HeldContacts::collect(const std::vector<ContactBody>& bodies, const std::ve
   // Every touching pair is one share of its obstacle's mass, split over the cloth vertices of its
   // cloth side by their weights; a vertex sums the shares of all the pairs it is part of.
   std::vector<int> touches(bodies.size(), 0);
-  std::map<std::tuple<int, int, int>, std::pair<double, Vec3>> perVertex;  // (cloth body, vertex, obstacle body) -> (weight, normal sum)
+  shares_.clear();
+  firstShare_.resize(bodies.size());
   for (const NearPair& near : nearPairs) {
     const bool clothIsA = bodies[near.pair.bodyA].isCloth();
     if (clothIsA == bodies[near.pair.bodyB].isCloth() || !(near.distance < reach)) continue;  // cloth on cloth: not held
@@ -33,28 +33,46 @@ void HeldContacts::collect(const std::vector<ContactBody>& bodies, const std::ve
     }
     ++touches[obstacleBody];
     const ContactBody& cloth = bodies[clothSide.body];
+    std::vector<int>& first = firstShare_[clothSide.body];
+    if (first.size() != cloth.x0->size()) first.assign(cloth.x0->size(), -1);
     for (int k = 0; k < clothSide.count; ++k) {
       const int v = clothSide.vertex[k];
       if ((*cloth.inverseMass)[v] == 0.0 || clothSide.weight[k] <= 0.0) continue;  // pinned: its pin holds it
       if (wasReleased(bodyToWorldIndex[clothSide.body], v)) continue;
-      // (Eigen leaves a default-constructed vector uninitialized: start the sum at zero.)
-      auto& entry = perVertex.try_emplace({clothSide.body, v, obstacleBody}, 0.0, Vec3::Zero()).first->second;
-      entry.first += clothSide.weight[k];
-      entry.second += clothSide.weight[k] * normal;
+      // The vertex's share for this obstacle: a short list per vertex (one entry per obstacle it touches).
+      int s = first[v];
+      while (s >= 0 && shares_[s].obstacleBody != obstacleBody) s = shares_[s].next;
+      if (s < 0) {
+        s = static_cast<int>(shares_.size());
+        shares_.push_back({clothSide.body, v, obstacleBody, first[v], 0.0, Vec3::Zero()});
+        first[v] = s;
+      }
+      shares_[s].weight += clothSide.weight[k];
+      shares_[s].normalSum += clothSide.weight[k] * normal;
     }
   }
-  for (const auto& [key, entry] : perVertex) {  // map order: deterministic
-    const auto [clothBody, vertex, obstacleBody] = key;
-    const Obstacle& obstacle = *bodies[obstacleBody].obstacle;
-    const Vec3 position = (*bodies[clothBody].x0)[vertex];
+  // In (cloth body, vertex, obstacle body) order: deterministic, whatever order the pairs came in.
+  shareOrder_.resize(shares_.size());
+  for (std::size_t s = 0; s < shares_.size(); ++s) {
+    shareOrder_[s] = static_cast<int>(s);
+    firstShare_[shares_[s].clothBody][shares_[s].vertex] = -1;  // ready for the next step
+  }
+  std::sort(shareOrder_.begin(), shareOrder_.end(), [&](int p, int q) {
+    const Share &a = shares_[p], &b = shares_[q];
+    return std::tie(a.clothBody, a.vertex, a.obstacleBody) < std::tie(b.clothBody, b.vertex, b.obstacleBody);
+  });
+  for (int s : shareOrder_) {
+    const Share& share = shares_[s];
+    const Obstacle& obstacle = *bodies[share.obstacleBody].obstacle;
+    const Vec3 position = (*bodies[share.clothBody].x0)[share.vertex];
     Contact contact;
-    contact.cloth = bodyToWorldIndex[clothBody];
-    contact.vertex = vertex;
-    contact.obstacle = bodyToWorldIndex[obstacleBody];
+    contact.cloth = bodyToWorldIndex[share.clothBody];
+    contact.vertex = share.vertex;
+    contact.obstacle = bodyToWorldIndex[share.obstacleBody];
     contact.sharesMass = obstacle.motion == ObstacleMotion::Dynamic;
-    contact.massFraction = entry.first / touches[obstacleBody];
+    contact.massFraction = share.weight / touches[share.obstacleBody];
     contact.bodyPoint = obstacle.start.toBody(position);
-    contact.bodyNormal = obstacle.start.orientation.conjugate() * entry.second.normalized();
+    contact.bodyNormal = obstacle.start.orientation.conjugate() * share.normalSum.normalized();
     contacts_.push_back(contact);
   }
   released_.clear();

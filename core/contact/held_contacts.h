@@ -75,6 +75,17 @@ class HeldContacts {
                      const std::vector<int>& bodyToWorldIndex, double reach);
 
   std::vector<Contact> contacts_;
+  // collect's scratch: one share per (cloth body, vertex, obstacle body) touching, summed over
+  // the pairs (weights and weighted normals); each vertex's shares form a list through `next`.
+  struct Share {
+    int clothBody = 0, vertex = 0, obstacleBody = 0;
+    int next = -1;
+    double weight = 0.0;
+    Vec3 normalSum = Vec3::Zero();
+  };
+  std::vector<Share> shares_;
+  std::vector<std::vector<int>> firstShare_;  // per body, per vertex: its latest share, or -1
+  std::vector<int> shareOrder_;
   std::vector<std::pair<int, int>> released_;  // (cloth, vertex) pulled away in the last step
 };
 

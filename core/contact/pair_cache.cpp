@@ -4,6 +4,7 @@
 #include <cmath>
 #include <iterator>
 #include <limits>
+#include <numeric>
 
 #include "collision/closest_points.h"
 
@@ -269,21 +270,13 @@ void PairCache::updateTrees(const std::vector<ContactBody>& bodies, bool everyth
     const CollisionMesh& mesh = *bodies[s].topology;
     const std::array<int, 3> counts{mesh.vertexCount, static_cast<int>(mesh.edges.size()),
                                     static_cast<int>(mesh.triangles.size())};
+    markDirtyFeatures(mesh, state, everything);
     for (int kind : {kVertex, kEdge, kFace}) {
-      std::vector<char>& dirty = state.dirty[kind];
-      if (kind != kVertex) dirty.assign(static_cast<std::size_t>(counts[kind]), 0);
-      std::vector<int>& dirtyIds = state.dirtyIds[kind];
-      dirtyIds.clear();
       state.boxes[kind].resize(static_cast<std::size_t>(counts[kind]));
-      for (int id = 0; id < counts[kind]; ++id) {
-        const FeatureVertices f = featureVertices(mesh, kind, id);
-        if (kind != kVertex) {
-          for (int k = 0; k < f.count; ++k) dirty[id] |= state.dirty[kVertex][f.ids[k]];
-        }
-        if (!everything && !dirty[id]) continue;
-        dirtyIds.push_back(id);
+      for (int id : state.dirtyIds[kind]) {
         // Two features within the reach now were within the reach plus both radii at the
         // anchors: boxes grown by a radius and half the largest reach overlap then.
+        const FeatureVertices f = featureVertices(mesh, kind, id);
         Aabb box;
         for (int k = 0; k < f.count; ++k) box.grow(state.anchor[f.ids[k]]);
         box.inflate(largestOf(state.radius, f) + 0.5 * largestReach_);
@@ -292,11 +285,60 @@ void PairCache::updateTrees(const std::vector<ContactBody>& bodies, bool everyth
       if (everything) {
         state.trees[kind].build(state.boxes[kind]);
         state.stale[kind] = false;
-      } else if (!dirtyIds.empty()) {
+      } else if (!state.dirtyIds[kind].empty()) {
         state.stale[kind] = true;  // refitted if a query needs the whole tree (fittedTree)
       }
     }
   }
+}
+
+void PairCache::markDirtyFeatures(const CollisionMesh& mesh, BodyState& state, bool everything) {
+  const std::array<int, 3> counts{mesh.vertexCount, static_cast<int>(mesh.edges.size()),
+                                  static_cast<int>(mesh.triangles.size())};
+  for (int kind : {kVertex, kEdge, kFace}) {
+    std::vector<int>& ids = state.dirtyIds[kind];
+    ids.clear();
+    if (kind != kVertex) state.dirty[kind].assign(static_cast<std::size_t>(counts[kind]), everything ? 1 : 0);
+    if (everything) {
+      ids.resize(static_cast<std::size_t>(counts[kind]));
+      std::iota(ids.begin(), ids.end(), 0);
+    }
+  }
+  if (everything) {
+    state.looseEdges.clear();
+    for (int e = 0; e < counts[kEdge]; ++e) {
+      if (mesh.edgeOwner[e] < 0) state.looseEdges.push_back(e);
+    }
+    return;
+  }
+  // An edge or a face is re-anchored with any of its vertices: each is among the triangles around
+  // a re-anchored vertex, so only those are looked at (and the edges left in no triangle).
+  std::vector<char>& dirtyVertex = state.dirty[kVertex];
+  std::vector<char>& dirtyEdge = state.dirty[kEdge];
+  std::vector<char>& dirtyFace = state.dirty[kFace];
+  for (int v = 0; v < counts[kVertex]; ++v) {
+    if (!dirtyVertex[v]) continue;
+    state.dirtyIds[kVertex].push_back(v);
+    for (int t : mesh.trianglesAround[v]) {
+      if (!dirtyFace[t]) {
+        dirtyFace[t] = 1;
+        state.dirtyIds[kFace].push_back(t);
+      }
+      for (int e : mesh.triangleEdges[t]) {
+        if (dirtyEdge[e] || (mesh.edges[e][0] != v && mesh.edges[e][1] != v)) continue;
+        dirtyEdge[e] = 1;
+        state.dirtyIds[kEdge].push_back(e);
+      }
+    }
+  }
+  for (int e : state.looseEdges) {
+    if (dirtyEdge[e] || !(dirtyVertex[mesh.edges[e][0]] || dirtyVertex[mesh.edges[e][1]])) continue;
+    dirtyEdge[e] = 1;
+    state.dirtyIds[kEdge].push_back(e);
+  }
+  // In id order, as a sweep over all features would list them.
+  std::sort(state.dirtyIds[kEdge].begin(), state.dirtyIds[kEdge].end());
+  std::sort(state.dirtyIds[kFace].begin(), state.dirtyIds[kFace].end());
 }
 
 const Bvh& PairCache::fittedTree(BodyState& state, int kind) {

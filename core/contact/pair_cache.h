@@ -76,6 +76,7 @@ class PairCache {
     std::array<bool, 3> stale{};                // boxes changed since the tree was fitted (refit when queried)
     std::array<std::vector<char>, 3> dirty;     // features with a vertex re-anchored in this use
     std::array<std::vector<int>, 3> dirtyIds;
+    std::vector<int> looseEdges;                // edges in no triangle (left by an edit), found at each build
   };
   // A cached pair: vertex and face, or two edges, and their distance at the anchors.
   // A cached pair: vertex and face, or two edges; their distance at the anchors, and the unit
@@ -98,6 +99,9 @@ class PairCache {
   // move).
   long long markDirtyVertices(const std::vector<ContactBody>& bodies, Span span, double h, bool everything);
   void updateTrees(const std::vector<ContactBody>& bodies, bool everything);
+  // The edges and faces with a re-anchored vertex (every feature when `everything`), flagged and
+  // listed in id order, with the re-anchored vertices' list.
+  static void markDirtyFeatures(const CollisionMesh& mesh, BodyState& state, bool everything);
   void search(const std::vector<ContactBody>& bodies, Entry& entry, bool everything);
   // The tree of a body's features of one kind, refitted first if its boxes changed.
   static const Bvh& fittedTree(BodyState& state, int kind);
