@@ -50,6 +50,11 @@ double shadowGap(const Vec3& axis, const std::vector<Vec3>& xf0, const std::vect
                  const std::vector<Vec3>& xg0, const std::vector<Vec3>& xg1, const FeatureVertices& g) {
   double nearestF = std::numeric_limits<double>::infinity();
   double farthestG = -std::numeric_limits<double>::infinity();
+  if (&xf0 == &xf1 && &xg0 == &xg1) {  // one position each (the start of the step): half the products
+    for (int k = 0; k < f.count; ++k) nearestF = std::min(nearestF, axis.dot(xf0[f.ids[k]]));
+    for (int k = 0; k < g.count; ++k) farthestG = std::max(farthestG, axis.dot(xg0[g.ids[k]]));
+    return nearestF - farthestG;
+  }
   for (int k = 0; k < f.count; ++k) nearestF = std::min({nearestF, axis.dot(xf0[f.ids[k]]), axis.dot(xf1[f.ids[k]])});
   for (int k = 0; k < g.count; ++k) farthestG = std::max({farthestG, axis.dot(xg0[g.ids[k]]), axis.dot(xg1[g.ids[k]])});
   return nearestF - farthestG;
@@ -305,40 +310,48 @@ void PairCache::markDirtyFeatures(const CollisionMesh& mesh, BodyState& state, b
     }
   }
   if (everything) {
-    state.looseEdges.clear();
-    for (int e = 0; e < counts[kEdge]; ++e) {
-      if (mesh.edgeOwner[e] < 0) state.looseEdges.push_back(e);
-    }
+    // The edges and faces around each vertex, for the partial updates until the next build (a
+    // topology change always builds again).
+    state.around.build(mesh);
     return;
   }
-  // An edge or a face is re-anchored with any of its vertices: each is among the triangles around
-  // a re-anchored vertex, so only those are looked at (and the edges left in no triangle).
+  // An edge or a face is re-anchored with any of its vertices.
   std::vector<char>& dirtyVertex = state.dirty[kVertex];
-  std::vector<char>& dirtyEdge = state.dirty[kEdge];
-  std::vector<char>& dirtyFace = state.dirty[kFace];
   for (int v = 0; v < counts[kVertex]; ++v) {
     if (!dirtyVertex[v]) continue;
     state.dirtyIds[kVertex].push_back(v);
-    for (int t : mesh.trianglesAround[v]) {
-      if (!dirtyFace[t]) {
-        dirtyFace[t] = 1;
-        state.dirtyIds[kFace].push_back(t);
-      }
-      for (int e : mesh.triangleEdges[t]) {
-        if (dirtyEdge[e] || (mesh.edges[e][0] != v && mesh.edges[e][1] != v)) continue;
-        dirtyEdge[e] = 1;
-        state.dirtyIds[kEdge].push_back(e);
+    for (int kind : {kEdge, kFace}) {
+      std::vector<char>& dirty = state.dirty[kind];
+      for (int id : state.around.of(kind, v)) {
+        if (dirty[id]) continue;
+        dirty[id] = 1;
+        state.dirtyIds[kind].push_back(id);
       }
     }
   }
-  for (int e : state.looseEdges) {
-    if (dirtyEdge[e] || !(dirtyVertex[mesh.edges[e][0]] || dirtyVertex[mesh.edges[e][1]])) continue;
-    dirtyEdge[e] = 1;
-    state.dirtyIds[kEdge].push_back(e);
+  // (Not sorted: the pairs a search finds are sorted before they are kept.)
+}
+
+void PairCache::FeaturesAround::build(const CollisionMesh& mesh) {
+  const int n = mesh.vertexCount;
+  for (int kind : {kEdge, kFace}) {
+    std::vector<int>& first = start[kind - 1];
+    std::vector<int>& list = ids[kind - 1];
+    first.assign(static_cast<std::size_t>(n) + 1, 0);
+    const int count = kind == kEdge ? static_cast<int>(mesh.edges.size()) : static_cast<int>(mesh.triangles.size());
+    auto forEachVertex = [&](int id, auto visit) {
+      if (kind == kEdge) {
+        for (int v : mesh.edges[id]) visit(v);
+      } else {
+        for (int v : mesh.triangles[id]) visit(v);
+      }
+    };
+    for (int id = 0; id < count; ++id) forEachVertex(id, [&](int v) { ++first[v + 1]; });
+    for (int v = 0; v < n; ++v) first[v + 1] += first[v];
+    list.resize(static_cast<std::size_t>(first[n]));
+    std::vector<int> next(first.begin(), first.end() - 1);
+    for (int id = 0; id < count; ++id) forEachVertex(id, [&](int v) { list[next[v]++] = id; });
   }
-  // In id order, as a sweep over all features would list them.
-  std::sort(state.dirtyIds[kEdge].begin(), state.dirtyIds[kEdge].end());
-  std::sort(state.dirtyIds[kFace].begin(), state.dirtyIds[kFace].end());
 }
 
 const Bvh& PairCache::fittedTree(BodyState& state, int kind) {
@@ -361,7 +374,7 @@ void PairCache::search(const std::vector<ContactBody>& bodies, Entry& entry, boo
   // Into `found`, sorted: the pairs of features (first of P, second of Q) with at least one
   // re-anchored feature (every pair when searching everything) whose trees' boxes overlap, that
   // `admit` lets through, and whose distance at the anchors is within the reach and both radii.
-  std::vector<CachedPair> found;
+  std::vector<CachedPair>& found = foundScratch_;
   auto search = [&](BodyState& P, const CollisionMesh& meshP, int kindP, BodyState& Q,
                     const CollisionMesh& meshQ, int kindQ, auto admit) {
     found.clear();
@@ -423,10 +436,12 @@ void PairCache::search(const std::vector<ContactBody>& bodies, Entry& entry, boo
     }
     std::erase_if(cached, [&](const CachedPair& p) { return P.dirty[kindP][p.first] | Q.dirty[kindQ][p.second]; });
     if (found.empty()) return;
-    std::vector<CachedPair> merged;
-    merged.reserve(cached.size() + found.size());
-    std::merge(cached.begin(), cached.end(), found.begin(), found.end(), std::back_inserter(merged), byIds);
-    cached.swap(merged);
+    // Into the scratch list, then swapped: the lists trade buffers instead of allocating one per
+    // use (the edge-edge list of a draped sheet is a few hundred kilobytes).
+    mergeScratch_.clear();
+    mergeScratch_.reserve(cached.size() + found.size());
+    std::merge(cached.begin(), cached.end(), found.begin(), found.end(), std::back_inserter(mergeScratch_), byIds);
+    cached.swap(mergeScratch_);
   };
 
   const auto anyPair = [](int, int) { return true; };

@@ -21,6 +21,7 @@
 // The pairs come out in the order findPrimitivePairs gives them (body pairs in pairing order; in
 // each, vertex-face pairs by vertex then face, then face-vertex pairs, then edge-edge pairs), so
 // the passes meet the colliding pairs in the same order either way.
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -65,6 +66,16 @@ class PairCache {
  private:
   // Features of a mesh, by kind: vertices, edges, faces (CollisionMesh ids).
   static constexpr int kVertex = 0, kEdge = 1, kFace = 2;
+  // The edges and faces around each vertex (compressed rows), so that a re-anchored vertex flags
+  // its features directly.
+  struct FeaturesAround {
+    std::array<std::vector<int>, 2> start, ids;  // [0] edges, [1] faces; start has a vertex count + 1 entries
+    void build(const CollisionMesh& mesh);
+    std::span<const int> of(int kind, int v) const {
+      const std::vector<int>& first = start[kind - 1];
+      return {ids[kind - 1].data() + first[v], static_cast<std::size_t>(first[v + 1] - first[v])};
+    }
+  };
   struct BodyState {
     bool involved = false;
     std::vector<Vec3> anchor;     // per vertex
@@ -76,7 +87,7 @@ class PairCache {
     std::array<bool, 3> stale{};                // boxes changed since the tree was fitted (refit when queried)
     std::array<std::vector<char>, 3> dirty;     // features with a vertex re-anchored in this use
     std::array<std::vector<int>, 3> dirtyIds;
-    std::vector<int> looseEdges;                // edges in no triangle (left by an edit), found at each build
+    FeaturesAround around;
   };
   // A cached pair: vertex and face, or two edges, and their distance at the anchors.
   // A cached pair: vertex and face, or two edges; their distance at the anchors, and the unit
@@ -108,6 +119,7 @@ class PairCache {
   void stepAside();
   const Entry* find(int a, int b) const;
 
+  std::vector<CachedPair> foundScratch_, mergeScratch_;  // search's lists, kept to reuse their buffers
   double skin_ = 0.0;
   double largestReach_ = 0.0;
   std::vector<Entry> entries_;
