@@ -464,7 +464,10 @@ void PairCache::search(const std::vector<ContactBody>& bodies, Entry& entry, boo
     return (everything || A.dirty[kEdge][f]) ? e < f : true;
   });
   for (CachedPair& p : found) {
-    if (p.first > p.second) std::swap(p.first, p.second);
+    if (p.first > p.second) {
+      std::swap(p.first, p.second);
+      p.apart = -p.apart;  // still from the second's closest point to the first's
+    }
   }
   std::sort(found.begin(), found.end(), byIds);
   replace(entry.ee, A, kEdge, A, kEdge);
