@@ -88,6 +88,7 @@ void setOwner(int& owner, int lowest, std::vector<int>& regrouped) {
 
 CollisionMeshChange editCollisionMesh(CollisionMesh& mesh, int vertexCount, const std::vector<TriangleEdit>& triangles,
                                       const std::vector<EdgeEdit>& edges) {
+  ++mesh.revision;
   assert(vertexCount >= mesh.vertexCount && "vertices are never removed");
   CollisionMeshChange change;
   change.oldTriangleCount = static_cast<int>(mesh.triangles.size());

@@ -19,6 +19,9 @@ struct CollisionMesh {
   std::vector<int> vertexOwner;                   // triangle owning each vertex (-1: vertex in no triangle)
   std::vector<int> edgeOwner;                     // triangle owning each edge (-1: edge in no triangle)
   std::vector<std::vector<int>> trianglesAround;  // triangles using each vertex, ascending
+  // Edits so far (editCollisionMesh counts them): with the counts above, what tells a structure
+  // built on the mesh that it changed, without comparing every triangle.
+  long long revision = 0;
 };
 
 // Vertex v is a corner of `triangle`.

@@ -173,7 +173,7 @@ bool PairCache::refresh(const std::vector<ContactBody>& bodies, Span span, doubl
     for (std::size_t s = 0; s < states_.size(); ++s) {
       if (!states_[s].involved) continue;
       const CollisionMesh& mesh = *bodies[s].topology;
-      if (static_cast<int>(states_[s].anchor.size()) != mesh.vertexCount || states_[s].triangles != mesh.triangles) {
+      if (!states_[s].builtOn.matches(mesh)) {
         built_ = false;
         waitUses_ = 0;
       }
@@ -188,7 +188,7 @@ bool PairCache::refresh(const std::vector<ContactBody>& bodies, Span span, doubl
     for (std::size_t s = 0; s < states_.size(); ++s) {
       if (!states_[s].involved) continue;
       const std::size_t n = static_cast<std::size_t>(bodies[s].topology->vertexCount);
-      states_[s].triangles = bodies[s].topology->triangles;
+      states_[s].builtOn = MeshStamp(*bodies[s].topology);
       states_[s].anchor.assign(n, Vec3::Zero());
       states_[s].radius.assign(n, 0.0);
     }

@@ -64,6 +64,19 @@ class PairCache {
   const PairCacheStats& stats() const { return stats_; }
 
  private:
+  // What identifies a mesh's topology: an edit (a tear, a cut) bumps the revision; a mesh made
+  // afresh for a cloth has other counts (the contact stage makes one only when they change).
+  struct MeshStamp {
+    const CollisionMesh* mesh = nullptr;
+    long long revision = -1;
+    int vertices = -1;
+    std::size_t triangles = 0, edges = 0;
+    MeshStamp() = default;
+    explicit MeshStamp(const CollisionMesh& m)
+        : mesh(&m), revision(m.revision), vertices(m.vertexCount), triangles(m.triangles.size()), edges(m.edges.size()) {}
+    bool matches(const CollisionMesh& m) const { return *this == MeshStamp(m); }
+    bool operator==(const MeshStamp&) const = default;
+  };
   // Features of a mesh, by kind: vertices, edges, faces (CollisionMesh ids).
   static constexpr int kVertex = 0, kEdge = 1, kFace = 2;
   // The edges and faces around each vertex (compressed rows), so that a re-anchored vertex flags
@@ -81,7 +94,7 @@ class PairCache {
     std::vector<Vec3> anchor;     // per vertex
     std::vector<double> radius;   // per vertex: how far from its anchor it may go (half the skin, or more for a fast one)
     std::vector<double> drift;    // per vertex: how far from its anchor it is over the current span
-    std::vector<std::array<int, 3>> triangles;  // the topology the anchors and pairs are for
+    MeshStamp builtOn;                          // the topology the anchors and pairs are for
     std::array<std::vector<Aabb>, 3> boxes;     // anchored feature boxes, grown for the trees
     std::array<Bvh, 3> trees;
     std::array<bool, 3> stale{};                // boxes changed since the tree was fitted (refit when queried)
