@@ -406,13 +406,23 @@ void PairCache::search(const std::vector<ContactBody>& bodies, Entry& entry, boo
         found.push_back({i, j, distance, reliable ? Vec3(difference / length) : Vec3::Zero()});
       }
     };
+    // The trees' boxes are grown for the largest reach: a query for a smaller one (cloth on cloth,
+    // the thickness, where the held vertices' reach is larger) shrinks its own box by the
+    // difference. (Even a box shrunk past its size gives the right overlaps: the test compares
+    // ends, which move by the same amount.)
+    const double shrink = largestReach_ - entry.reach;
+    auto queryBox = [&](const BodyState& state, int kind, int id) {
+      Aabb box = state.boxes[kind][id];
+      box.inflate(-shrink);
+      return box;
+    };
     if (everything) {
       P.trees[kindP].overlappingPairs(Q.trees[kindQ], measure);
     } else {
       // Each re-anchored feature's box against the other side's whole tree.
       if (!P.dirtyIds[kindP].empty()) {
         const Bvh& treeQ = fittedTree(Q, kindQ);
-        for (int i : P.dirtyIds[kindP]) treeQ.overlapping(P.boxes[kindP][i], [&](int j) { measure(i, j); });
+        for (int i : P.dirtyIds[kindP]) treeQ.overlapping(queryBox(P, kindP, i), [&](int j) { measure(i, j); });
       }
       // Pairs with a re-anchored feature of Q only (those with both were found above). Against
       // itself (edges of a cloth against its edges) the query above already met every pair.
@@ -420,7 +430,7 @@ void PairCache::search(const std::vector<ContactBody>& bodies, Entry& entry, boo
       if (!Q.dirtyIds[kindQ].empty() && !sameTree) {
         const Bvh& treeP = fittedTree(P, kindP);
         for (int j : Q.dirtyIds[kindQ]) {
-          treeP.overlapping(Q.boxes[kindQ][j], [&](int i) {
+          treeP.overlapping(queryBox(Q, kindQ, j), [&](int i) {
             if (!P.dirty[kindP][i]) measure(i, j);
           });
         }
