@@ -309,6 +309,11 @@ Command addBenchCommand(CLI::App& app) {
   cli->add_option("--contact-resolution", options->contactOptions.resolution, "Contact benchmark: grid vertices per side")
       ->check(CLI::Range(4, 1024))
       ->capture_default_str();
+  cli->add_option("--contact-warmup", options->contactOptions.warmup,
+                  "Contact benchmark: untimed steps before timing (90: the sheet has just draped and still slides; "
+                  "600: ten seconds in, folded at its hem)")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
   cli->add_option("--contact-csv", options->contactOptions.csv, "Contact benchmark: CSV output file")->capture_default_str();
   cli->add_flag("--tearing", options->tearing,
                 "Instead of timing sizes, time the tearing stage of a sheet pulled apart, for the thesis' and the dense "
