@@ -15,8 +15,9 @@
 //
 // A vertex that leaves its ball is re-anchored, and only the pairs of the features around it are
 // searched again (each such feature against the other body's tree of anchored feature boxes).
-// When too many vertices move at once (a falling cloth, a fast tool) the cache steps aside and
-// the callers search afresh (findPrimitivePairs), with exponential back-off before it tries again.
+// When too many vertices move at once (a falling cloth, a fast tool), or the topology changes (a
+// tear, a cut), the cache steps aside and the callers search afresh (findPrimitivePairs). It
+// builds again after a wait, which doubles each time a build is abandoned soon after it was made.
 //
 // The pairs come out in the order findPrimitivePairs gives them (body pairs in pairing order; in
 // each, vertex-face pairs by vertex then face, then face-vertex pairs, then edge-edge pairs), so
@@ -102,7 +103,6 @@ class PairCache {
     std::array<std::vector<int>, 3> dirtyIds;
     FeaturesAround around;
   };
-  // A cached pair: vertex and face, or two edges, and their distance at the anchors.
   // A cached pair: vertex and face, or two edges; their distance at the anchors, and the unit
   // direction from the second's closest point to the first's (zero when they touch there).
   struct CachedPair {
@@ -124,7 +124,7 @@ class PairCache {
   long long markDirtyVertices(const std::vector<ContactBody>& bodies, Span span, double h, bool everything);
   void updateTrees(const std::vector<ContactBody>& bodies, bool everything);
   // The edges and faces with a re-anchored vertex (every feature when `everything`), flagged and
-  // listed in id order, with the re-anchored vertices' list.
+  // listed (in no particular order), with the re-anchored vertices' list.
   static void markDirtyFeatures(const CollisionMesh& mesh, BodyState& state, bool everything);
   void search(const std::vector<ContactBody>& bodies, Entry& entry, bool everything);
   // The tree of a body's features of one kind, refitted first if its boxes changed.
