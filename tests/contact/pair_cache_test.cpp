@@ -191,5 +191,34 @@ TEST(PairCacheTest, StepsAsideForNonFinitePositions) {
   EXPECT_TRUE(out.empty());
 }
 
+// A cloth that jolts everything out of its balls every third use (layers jittering in a pile)
+// must not cost a full build every third use: each build abandoned that soon doubles the wait
+// before the next. Once the motion calms down, the cache answers again within the longest wait.
+TEST(PairCacheTest, WaitsLongerEachTimeABuildIsAbandonedSoon) {
+  Scene scene;
+  PairCache cache(kSkin);
+  cache.add(scene.obstaclePairing, kObstacleReach);
+  std::mt19937 rng(5);
+  std::vector<PrimitivePair> out;
+  const int joltingUses = 300;
+  for (int use = 0; use < joltingUses; ++use) {
+    scene.advance(rng, use % 3 == 0 ? 0.03 : 0.0002, 0.0002);
+    cache.findPairs(scene.bodies, scene.obstaclePairing, kObstacleReach, PairCache::Span::WholeStep, kStep, out);
+  }
+  // Waits of 1, 2, 4, ... 64 uses: about ten builds in 300 uses (a hundred if each build that
+  // answered one calm use started the waits again from one).
+  const long long joltingBuilds = cache.stats().fullBuilds;
+  EXPECT_GE(joltingBuilds, 3);
+  EXPECT_LE(joltingBuilds, 12);
+
+  const long long servedBefore = cache.stats().served;
+  const int calmUses = 300;
+  for (int use = 0; use < calmUses; ++use) {
+    scene.advance(rng, 0.0002, 0.0002);
+    cache.findPairs(scene.bodies, scene.obstaclePairing, kObstacleReach, PairCache::Span::WholeStep, kStep, out);
+  }
+  EXPECT_GE(cache.stats().served - servedBefore, calmUses - 70);  // the longest wait is 64 uses
+}
+
 }  // namespace
 }  // namespace weft
