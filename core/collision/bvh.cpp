@@ -15,13 +15,7 @@ namespace {
 // inside a leaf pair; 4 was the fastest of 1, 2, 4 and 8 for a 64 x 64 cloth against itself.
 constexpr int kMaxLeafSize = 4;
 
-// Aabb::overlaps as 0 or 1, evaluated without branches (all six comparisons, no early exit).
-inline int overlapFlag(const Aabb& a, const Aabb& b) {
-  return (a.lo.x() <= b.hi.x()) & (b.lo.x() <= a.hi.x()) & (a.lo.y() <= b.hi.y()) & (b.lo.y() <= a.hi.y()) &
-         (a.lo.z() <= b.hi.z()) & (b.lo.z() <= a.hi.z());
-}
-
-inline bool boxesOverlap(const Aabb& a, const Aabb& b) { return overlapFlag(a, b) != 0; }
+inline int overlapFlag(const Aabb& a, const Aabb& b) { return Bvh::overlapsBox(a, b) ? 1 : 0; }
 
 // The traversal's stack of node pairs. It stays in the inline array for any balanced tree (the
 // median split bounds the depth by log2 of the leaf count, and a pair traversal holds a few
@@ -183,7 +177,7 @@ void Bvh::traverse(const Bvh& other, bool selfQuery, const std::function<void(in
   // Invariant: a pair on the stack is either a node with itself (self query only) or two nodes
   // whose boxes overlap. In a self query the two sides of a pair are disjoint subtrees, so each
   // unordered leaf pair is met exactly once.
-  if (selfQuery || boxesOverlap(nodes_[0].box, other.nodes_[0].box)) stack.push(0, 0);
+  if (selfQuery || overlapsBox(nodes_[0].box, other.nodes_[0].box)) stack.push(0, 0);
   // The box pairs of a leaf pair are tested first and the overlapping ones visited after: about
   // half of them overlap in a cloth, a coin flip no branch predictor can learn, so the tests
   // write every candidate and only advance past the overlapping ones. A leaf grown by insertions
@@ -214,7 +208,7 @@ void Bvh::traverse(const Bvh& other, bool selfQuery, const std::function<void(in
       } else {
         const int left = a + 1, right = na.first;
         stack.push(right, right);
-        stack.pushIf(boxesOverlap(nodes_[left].box, nodes_[right].box), left, right);
+        stack.pushIf(overlapsBox(nodes_[left].box, nodes_[right].box), left, right);
         stack.push(left, left);
       }
       continue;
@@ -243,18 +237,18 @@ void Bvh::traverse(const Bvh& other, bool selfQuery, const std::function<void(in
       const Aabb& boxRightA = nodes_[rightA].box;
       const Aabb& boxLeftB = other.nodes_[leftB].box;
       const Aabb& boxRightB = other.nodes_[rightB].box;
-      stack.pushIf(boxesOverlap(boxRightA, boxRightB), rightA, rightB);
-      stack.pushIf(boxesOverlap(boxRightA, boxLeftB), rightA, leftB);
-      stack.pushIf(boxesOverlap(boxLeftA, boxRightB), leftA, rightB);
-      stack.pushIf(boxesOverlap(boxLeftA, boxLeftB), leftA, leftB);
+      stack.pushIf(overlapsBox(boxRightA, boxRightB), rightA, rightB);
+      stack.pushIf(overlapsBox(boxRightA, boxLeftB), rightA, leftB);
+      stack.pushIf(overlapsBox(boxLeftA, boxRightB), leftA, rightB);
+      stack.pushIf(overlapsBox(boxLeftA, boxLeftB), leftA, leftB);
     } else if (nb.isLeaf()) {
       const int left = a + 1, right = na.first;
-      stack.pushIf(boxesOverlap(nodes_[right].box, nb.box), right, b);
-      stack.pushIf(boxesOverlap(nodes_[left].box, nb.box), left, b);
+      stack.pushIf(overlapsBox(nodes_[right].box, nb.box), right, b);
+      stack.pushIf(overlapsBox(nodes_[left].box, nb.box), left, b);
     } else {
       const int left = b + 1, right = nb.first;
-      stack.pushIf(boxesOverlap(na.box, other.nodes_[right].box), a, right);
-      stack.pushIf(boxesOverlap(na.box, other.nodes_[left].box), a, left);
+      stack.pushIf(overlapsBox(na.box, other.nodes_[right].box), a, right);
+      stack.pushIf(overlapsBox(na.box, other.nodes_[left].box), a, left);
     }
   }
 }

@@ -37,7 +37,13 @@ class Bvh {
   // extent comes with the next refit.
   void insert(int nearBox);
   bool needsRebuild() const;
-  static constexpr int kMaxGrownLeafSize = 16;  // boxes in a leaf beyond which needsRebuild()
+  static constexpr int kMaxGrownLeafSize = 16;
+  // Aabb::overlaps with all six comparisons made, no early exit: the traversals' box tests pass
+  // about half the time in a cloth, which no branch predictor learns.
+  static bool overlapsBox(const Aabb& a, const Aabb& b) {
+    return (a.lo.x() <= b.hi.x()) & (b.lo.x() <= a.hi.x()) & (a.lo.y() <= b.hi.y()) & (b.lo.y() <= a.hi.y()) &
+           (a.lo.z() <= b.hi.z()) & (b.lo.z() <= a.hi.z());
+  }  // boxes in a leaf beyond which needsRebuild()
   int leafCount() const { return boxCount_; }
   bool empty() const { return leafCount() == 0; }
   const Aabb& bounds() const;  // box of the whole tree (empty box when the tree is empty)
@@ -93,12 +99,6 @@ class Bvh {
     bool isLeaf() const { return count > 0; }
   };
 
-  // Aabb::overlaps without the short-circuits: a query's box tests pass about half the time, which
-  // no branch predictor learns.
-  static bool overlapsBox(const Aabb& a, const Aabb& b) {
-    return (a.lo.x() <= b.hi.x()) & (b.lo.x() <= a.hi.x()) & (a.lo.y() <= b.hi.y()) & (b.lo.y() <= a.hi.y()) &
-           (a.lo.z() <= b.hi.z()) & (b.lo.z() <= a.hi.z());
-  }
   void refitNodes();
   // Both queries: a simultaneous descent of this tree and `other` (itself when selfQuery, then
   // reporting each unordered pair once, as (smaller id, larger id)).
