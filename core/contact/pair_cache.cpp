@@ -312,6 +312,7 @@ void PairCache::markDirtyFeatures(const CollisionMesh& mesh, BodyState& state, b
   for (int kind : {kVertex, kEdge, kFace}) {
     std::vector<int>& ids = state.dirtyIds[kind];
     ids.clear();
+    state.groupStart[kind].clear();
     if (kind != kVertex) state.dirty[kind].assign(static_cast<std::size_t>(counts[kind]), everything ? 1 : 0);
     if (everything) {
       ids.resize(static_cast<std::size_t>(counts[kind]));
@@ -328,6 +329,7 @@ void PairCache::markDirtyFeatures(const CollisionMesh& mesh, BodyState& state, b
   std::vector<char>& dirtyVertex = state.dirty[kVertex];
   for (int v = 0; v < counts[kVertex]; ++v) {
     if (!dirtyVertex[v]) continue;
+    for (int kind : {kVertex, kEdge, kFace}) state.groupStart[kind].push_back(static_cast<int>(state.dirtyIds[kind].size()));
     state.dirtyIds[kVertex].push_back(v);
     for (int kind : {kEdge, kFace}) {
       std::vector<char>& dirty = state.dirty[kind];
@@ -338,6 +340,7 @@ void PairCache::markDirtyFeatures(const CollisionMesh& mesh, BodyState& state, b
       }
     }
   }
+  for (int kind : {kVertex, kEdge, kFace}) state.groupStart[kind].push_back(static_cast<int>(state.dirtyIds[kind].size()));
   // (Not sorted: the pairs a search finds are sorted before they are kept.)
 }
 
@@ -428,21 +431,45 @@ void PairCache::search(const std::vector<ContactBody>& bodies, Entry& entry, boo
     if (everything) {
       P.trees[kindP].overlappingPairs(Q.trees[kindQ], measure);
     } else {
-      // Each re-anchored feature's box against the other side's whole tree.
+      // Each re-anchored feature's box against the other side's whole tree, a group (the
+      // features around one re-anchored vertex) at a time: one descent with the group's joint box,
+      // then each feature's own box against the leaves it reached. The pairs tested are the same
+      // as one query per feature would test; the descents are a third as many.
+      auto queryGroups = [&](BodyState& S, int kindS, const Bvh& tree, const std::vector<Aabb>& treeBoxes,
+                             auto measureWith) {
+        const std::vector<int>& ids = S.dirtyIds[kindS];
+        const std::vector<int>& groups = S.groupStart[kindS];
+        for (std::size_t g = 0; g + 1 < groups.size(); ++g) {
+          const int begin = groups[g], end = groups[g + 1];
+          if (begin == end) continue;
+          groupBoxes_.clear();
+          Aabb joint;
+          for (int k = begin; k < end; ++k) {
+            groupBoxes_.push_back(queryBox(S, kindS, ids[k]));
+            joint.grow(groupBoxes_.back());
+          }
+          if (end - begin == 1) {
+            tree.overlapping(joint, [&](int other) { measureWith(ids[begin], other); });
+            continue;
+          }
+          tree.overlapping(joint, [&](int other) {
+            const Aabb& box = treeBoxes[other];
+            for (int k = begin; k < end; ++k) {
+              if (Bvh::overlapsBox(groupBoxes_[k - begin], box)) measureWith(ids[k], other);
+            }
+          });
+        }
+      };
       if (!P.dirtyIds[kindP].empty()) {
-        const Bvh& treeQ = fittedTree(Q, kindQ);
-        for (int i : P.dirtyIds[kindP]) treeQ.overlapping(queryBox(P, kindP, i), [&](int j) { measure(i, j); });
+        queryGroups(P, kindP, fittedTree(Q, kindQ), Q.boxes[kindQ], [&](int i, int j) { measure(i, j); });
       }
       // Pairs with a re-anchored feature of Q only (those with both were found above). Against
       // itself (edges of a cloth against its edges) the query above already met every pair.
       const bool sameTree = &P == &Q && kindP == kindQ;
       if (!Q.dirtyIds[kindQ].empty() && !sameTree) {
-        const Bvh& treeP = fittedTree(P, kindP);
-        for (int j : Q.dirtyIds[kindQ]) {
-          treeP.overlapping(queryBox(Q, kindQ, j), [&](int i) {
-            if (!P.dirty[kindP][i]) measure(i, j);
-          });
-        }
+        queryGroups(Q, kindQ, fittedTree(P, kindP), P.boxes[kindP], [&](int j, int i) {
+          if (!P.dirty[kindP][i]) measure(i, j);
+        });
       }
     }
     std::sort(found.begin(), found.end(), byIds);

@@ -101,6 +101,10 @@ class PairCache {
     std::array<bool, 3> stale{};                // boxes changed since the tree was fitted (refit when queried)
     std::array<std::vector<char>, 3> dirty;     // features with a vertex re-anchored in this use
     std::array<std::vector<int>, 3> dirtyIds;
+    // dirtyIds[kind] in groups, one per re-anchored vertex (its features not already listed by an
+    // earlier one): group g is [groupStart[kind][g], groupStart[kind][g + 1]). A group's features
+    // surround one vertex, so one query of their joint box finds every candidate of each.
+    std::array<std::vector<int>, 3> groupStart;
     FeaturesAround around;
   };
   // A cached pair: vertex and face, or two edges; their distance at the anchors, and the unit
@@ -133,6 +137,7 @@ class PairCache {
   const Entry* find(int a, int b) const;
 
   std::vector<CachedPair> foundScratch_, mergeScratch_;  // search's lists, kept to reuse their buffers
+  std::vector<Aabb> groupBoxes_;  // search's query boxes of one group of re-anchored features
   double skin_ = 0.0;
   double largestReach_ = 0.0;
   std::vector<Entry> entries_;
