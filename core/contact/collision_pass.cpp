@@ -94,7 +94,7 @@ void recordIfSharp(const std::vector<ContactBody>& bodies, const Collision& c, c
 
 }  // namespace
 
-long long stopAtGround(std::vector<ContactBody>& bodies, const ContactStepSettings& settings) {
+long long stopAtGround(std::vector<ContactBody>& bodies, const ContactStepSettings& settings, VertexFlags* moved) {
   const GroundSpec& ground = *settings.ground;
   const double rest = ground.height + kSeparationFraction * settings.thickness;
   long long count = 0;
@@ -105,6 +105,7 @@ long long stopAtGround(std::vector<ContactBody>& bodies, const ContactStepSettin
       Vec3& v = (*body.v)[i];
       applyGroundImpulse(v, (rest - (*body.x0)[i].y()) / settings.h, ground.friction);
       (*body.x1)[i] = (*body.x0)[i] + settings.h * v;
+      if (moved) (*moved)[static_cast<std::size_t>(&body - bodies.data())][i] = 1;
       ++count;
     }
   }
@@ -125,18 +126,55 @@ bool detectCollision(const std::vector<ContactBody>& bodies, const PrimitivePair
   return normalVelocity < out.targetNormalVelocity;
 }
 
+namespace {
+
+// Flags the vertices of a crossing pair's two features: an impulse of this iteration may move
+// them, and even unmoved the pair crosses again in the next iteration, where an impulse met
+// before it may turn it into a collision. A dynamic obstacle is flagged whole: an impulse moves
+// its whole pose.
+void flagCrossingPair(const std::vector<ContactBody>& bodies, const PrimitivePair& pair, VertexFlags& flags) {
+  auto flagFeature = [&](int body, bool isVertex, bool isFace, int feature) {
+    const ContactBody& b = bodies[body];
+    std::vector<char>& bodyFlags = flags[body];
+    if (!b.isCloth() && b.obstacle->motion == ObstacleMotion::Dynamic) {
+      std::fill(bodyFlags.begin(), bodyFlags.end(), char{1});
+    } else if (isVertex) {
+      bodyFlags[feature] = 1;
+    } else if (isFace) {
+      for (int v : b.topology->triangles[feature]) bodyFlags[v] = 1;
+    } else {
+      for (int v : b.topology->edges[feature]) bodyFlags[v] = 1;
+    }
+  };
+  const bool vertexFace = pair.kind == PairKind::VertexFace;
+  flagFeature(pair.bodyA, vertexFace, false, pair.featureA);
+  flagFeature(pair.bodyB, false, vertexFace, pair.featureB);
+}
+
+}  // namespace
+
 bool runCollisionPass(std::vector<ContactBody>& bodies, const ContactPairing& pairing,
                       const ContactStepSettings& settings, const std::vector<int>& bodyToWorldIndex,
                       PairCache* cache, CandidatePairs& scratch, std::vector<PrimitivePair>& pairs, PassCounts& counts,
                       std::vector<SharpContactRecord>& records) {
   std::vector<PrimitivePair> crossing;
+  // After the first iteration, only a pair with a vertex flagged by the last one (stopped at the
+  // ground, or in a crossing pair) can cross: every other pair is where it was when it was last
+  // tested, and did not cross then. So each later iteration looks at those pairs only (Bridson,
+  // Fedkiw & Anderson 2002 §7.3 go over the whole list each time; the crossings met, their order
+  // and every impulse are the same).
+  VertexFlags flagged(bodies.size());
+  for (std::size_t b = 0; b < bodies.size(); ++b) flagged[b].assign(bodies[b].x0->size(), 0);
   for (int iteration = 0; iteration < settings.ccdIterations; ++iteration) {
     ++counts.ccdIterations;
-    long long collisions = settings.ground != nullptr ? stopAtGround(bodies, settings) : 0;
+    const VertexFlags* onlyTouching = iteration == 0 || settings.recheckAllPairs ? nullptr : &flagged;
+    long long collisions = settings.ground != nullptr ? stopAtGround(bodies, settings, &flagged) : 0;
     counts.groundContacts += collisions;
-    if (!cache || !cache->findPairs(bodies, pairing, 0.0, PairCache::Span::WholeStep, settings.h, pairs)) {
+    if (!cache || !cache->findPairs(bodies, pairing, 0.0, PairCache::Span::WholeStep, settings.h, pairs, onlyTouching)) {
       findPrimitivePairs(bodies, pairing, 0.0, scratch, pairs);
+      if (onlyTouching) std::erase_if(pairs, [&](const PrimitivePair& p) { return !pairTouches(bodies, p, flagged); });
     }
+    for (std::vector<char>& flags : flagged) std::fill(flags.begin(), flags.end(), char{0});
     // Only the pairs that cross in the state the iteration starts from are stopped in it: those
     // are the same whichever search listed them (the pair cache lists more candidates than a
     // fresh search), so the result never depends on the search. A collision that an impulse of
@@ -144,7 +182,9 @@ bool runCollisionPass(std::vector<ContactBody>& bodies, const ContactPairing& pa
     crossing.clear();
     Collision hit;
     for (const PrimitivePair& pair : pairs) {
-      if (detectCrossing(bodies, pair, hit)) crossing.push_back(pair);
+      if (!detectCrossing(bodies, pair, hit)) continue;
+      crossing.push_back(pair);
+      flagCrossingPair(bodies, pair, flagged);
     }
     for (const PrimitivePair& pair : crossing) {
       Collision c;

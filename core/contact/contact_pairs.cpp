@@ -24,6 +24,18 @@ void findPrimitivePairs(std::vector<ContactBody>& bodies, const ContactPairing& 
   }
 }
 
+bool pairTouches(const std::vector<ContactBody>& bodies, const PrimitivePair& pair, const VertexFlags& flags) {
+  const std::vector<char>& a = flags[pair.bodyA];
+  const std::vector<char>& b = flags[pair.bodyB];
+  if (pair.kind == PairKind::VertexFace) {
+    const auto& face = bodies[pair.bodyB].topology->triangles[pair.featureB];
+    return a[pair.featureA] | b[face[0]] | b[face[1]] | b[face[2]];
+  }
+  const auto& edgeA = bodies[pair.bodyA].topology->edges[pair.featureA];
+  const auto& edgeB = bodies[pair.bodyB].topology->edges[pair.featureB];
+  return a[edgeA[0]] | a[edgeA[1]] | b[edgeB[0]] | b[edgeB[1]];
+}
+
 double pairFriction(const std::vector<ContactBody>& bodies, const PrimitivePair& pair) {
   const ContactBody& a = bodies[pair.bodyA];
   return a.isCloth() ? bodies[pair.bodyB].friction : a.friction;

@@ -29,6 +29,12 @@ struct ContactPairing {
 void findPrimitivePairs(std::vector<ContactBody>& bodies, const ContactPairing& pairing, double margin,
                         CandidatePairs& scratch, std::vector<PrimitivePair>& out);
 
+// A flag per vertex of each body (indexed like the bodies).
+using VertexFlags = std::vector<std::vector<char>>;
+
+// Whether any vertex of the pair's two features is flagged.
+bool pairTouches(const std::vector<ContactBody>& bodies, const PrimitivePair& pair, const VertexFlags& flags);
+
 // The Coulomb coefficient of a pair: the obstacle's against cloth, or cloth on cloth.
 double pairFriction(const std::vector<ContactBody>& bodies, const PrimitivePair& pair);
 

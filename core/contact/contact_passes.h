@@ -25,6 +25,7 @@ struct ContactStepSettings {
   const GroundSpec* ground = nullptr;  // null: no ground
   int ccdIterations = 8;
   int impactZoneIterations = 50;
+  bool recheckAllPairs = false;  // pass 2: every pair in every iteration (ContactSpec::recheckAllPairs)
 };
 
 // A sharp tool feature that hit the cloth in pass 2 (thesis §3.3): read by cutting.
@@ -84,7 +85,9 @@ bool detectCollision(const std::vector<ContactBody>& bodies, const PrimitivePair
 bool detectCrossing(const std::vector<ContactBody>& bodies, const PrimitivePair& pair, Collision& out);
 
 // Cloth vertices that would end the step below the ground plane stop just above it (an exact
-// test: the plane is flat, so no edge or face can cross it without a vertex). Returns how many.
-long long stopAtGround(std::vector<ContactBody>& bodies, const ContactStepSettings& settings);
+// test: the plane is flat, so no edge or face can cross it without a vertex). Returns how many;
+// flags them in `moved` when given.
+long long stopAtGround(std::vector<ContactBody>& bodies, const ContactStepSettings& settings,
+                       VertexFlags* moved = nullptr);
 
 }  // namespace weft

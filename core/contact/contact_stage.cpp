@@ -119,6 +119,7 @@ void ContactStage::resolve(std::vector<Cloth>& cloths, const std::vector<std::ve
   settings.ground = ground_.enabled ? &ground_ : nullptr;
   settings.ccdIterations = spec_.ccdIterations;
   settings.impactZoneIterations = spec_.impactZoneIterations;
+  settings.recheckAllPairs = spec_.recheckAllPairs;
 
   PassCounts counts;
   const PairCacheStats cacheBefore = pairCache_.stats();

@@ -115,7 +115,7 @@ void PairCache::stepAside() {
 }
 
 bool PairCache::findPairs(const std::vector<ContactBody>& bodies, const ContactPairing& pairing, double reach,
-                          Span span, double h, std::vector<PrimitivePair>& out) {
+                          Span span, double h, std::vector<PrimitivePair>& out, const VertexFlags* onlyTouching) {
   out.clear();
   ++stats_.uses;
   // Every body pair asked for must be cached with at least this reach.
@@ -149,9 +149,15 @@ bool PairCache::findPairs(const std::vector<ContactBody>& bodies, const ContactP
     const std::vector<Vec3>& a1 = wholeStep ? *bodies[bodyA].x1 : a0;
     const std::vector<Vec3>& b0 = *bodies[bodyB].x0;
     const std::vector<Vec3>& b1 = wholeStep ? *bodies[bodyB].x1 : b0;
+    auto anyFlagged = [](const std::vector<char>& flags, const FeatureVertices& f) {
+      char any = 0;
+      for (int k = 0; k < f.count; ++k) any |= flags[f.ids[k]];
+      return any != 0;
+    };
     for (const CachedPair& p : pairs) {
       const FeatureVertices f = featureVertices(meshA, kindA, p.first);
       const FeatureVertices g = featureVertices(meshB, kindB, p.second);
+      if (onlyTouching && !anyFlagged((*onlyTouching)[bodyA], f) && !anyFlagged((*onlyTouching)[bodyB], g)) continue;
       if (!(p.distance - largestOf(A.drift, f) - largestOf(B.drift, g) < limit)) continue;
       // At the anchors, the first feature lies beyond the plane through its closest point normal
       // to `apart`, the second short of the one through its own (both are convex): the gap between
@@ -383,7 +389,7 @@ void PairCache::search(const std::vector<ContactBody>& bodies, Entry& entry, boo
   const double slack = kRoundingSlack * (largestReach_ + skin_);
   auto byIds = [](const CachedPair& p, const CachedPair& q) { return pairLess(p.first, p.second, q.first, q.second); };
 
-  // Into `found`, sorted: the pairs of features (first of P, second of Q) with at least one
+  // Into `found`, in no particular order: the pairs of features (first of P, second of Q) with at least one
   // re-anchored feature (every pair when searching everything) whose trees' boxes overlap, that
   // `admit` lets through, and whose distance at the anchors is within the reach and both radii.
   std::vector<CachedPair>& found = foundScratch_;
@@ -472,10 +478,11 @@ void PairCache::search(const std::vector<ContactBody>& bodies, Entry& entry, boo
         });
       }
     }
-    std::sort(found.begin(), found.end(), byIds);
   };
-  // Keeps the cached pairs without a re-anchored feature and adds the ones just found.
+  // Keeps the cached pairs without a re-anchored feature and adds the ones just found (sorted
+  // here: the self edge pairs are put in order first).
   auto replace = [&](std::vector<CachedPair>& cached, const BodyState& P, int kindP, const BodyState& Q, int kindQ) {
+    std::sort(found.begin(), found.end(), byIds);
     if (everything) {
       cached.swap(found);
       return;
@@ -515,7 +522,6 @@ void PairCache::search(const std::vector<ContactBody>& bodies, Entry& entry, boo
       p.apart = -p.apart;  // still from the second's closest point to the first's
     }
   }
-  std::sort(found.begin(), found.end(), byIds);
   replace(entry.ee, A, kEdge, A, kEdge);
 }
 

@@ -58,9 +58,10 @@ class PairCache {
   // Every pair of `pairing` (added with a reach >= `reach`) whose features come within `reach`
   // over `span`, possibly with others farther apart (their feature boxes are within `reach`), in
   // findPrimitivePairs' order. Returns false, with `out` empty, when the cache cannot answer this
-  // time: then search with findPrimitivePairs.
+  // time: then search with findPrimitivePairs. With `onlyTouching`, only the pairs with a flagged
+  // vertex come out (the same pairs in the same order as the whole answer, less the others).
   bool findPairs(const std::vector<ContactBody>& bodies, const ContactPairing& pairing, double reach, Span span,
-                 double h, std::vector<PrimitivePair>& out);
+                 double h, std::vector<PrimitivePair>& out, const VertexFlags* onlyTouching = nullptr);
 
   const PairCacheStats& stats() const { return stats_; }
 

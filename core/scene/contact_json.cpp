@@ -152,7 +152,7 @@ std::vector<ObstacleSpec> parseObstacles(const json& array, const std::string& p
 ContactSpec parseContact(const json& j, const std::string& pointer, const SceneReadContext& ctx) {
   const FieldReader r(j, pointer, ctx.file,
                       {"obstacles", "self", "thickness", "self_friction", "ccd_iterations", "impact_zone_iterations",
-                       "reuse_pairs"});
+                       "reuse_pairs", "recheck_all_pairs"});
   ContactSpec contact;
   contact.obstacles = r.boolean("obstacles", contact.obstacles);
   contact.self = r.boolean("self", contact.self);
@@ -161,6 +161,7 @@ ContactSpec parseContact(const json& j, const std::string& pointer, const SceneR
   contact.ccdIterations = r.integer("ccd_iterations", contact.ccdIterations, 1);
   contact.impactZoneIterations = r.integer("impact_zone_iterations", contact.impactZoneIterations, 1);
   contact.reusePairs = r.boolean("reuse_pairs", contact.reusePairs);
+  contact.recheckAllPairs = r.boolean("recheck_all_pairs", contact.recheckAllPairs);
   return contact;
 }
 

@@ -77,6 +77,10 @@ struct ContactSpec {
   // searching every time. Exact either way (the same pairs meet the same tests); off only to
   // measure what it saves or to rule it out.
   bool reusePairs = true;
+  // Pass 2 tests, after its first iteration, only the pairs near what the last iteration moved or
+  // found crossing. Exact either way (the others cannot cross); on tests every pair each time, only
+  // to rule the shortcut out.
+  bool recheckAllPairs = false;
 
   friend bool operator==(const ContactSpec&, const ContactSpec&) = default;
 };

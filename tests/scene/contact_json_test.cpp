@@ -37,7 +37,8 @@ TEST(ContactJson, ObstaclesGroundAndContactAreRead) {
   scene["obstacles"].push_back(json::parse(R"({"name": "sword", "shape": {"mesh": {"path": "tools/sword.obj"}},
       "motion": {"kinematic": {"keyframes": [{"t": 0, "translate": [0, 1, 0]}, {"t": 1, "translate": [0, 0, 0]}]}}})"));
   scene["ground"] = json::parse(R"({"height": -0.5})");
-  scene["contact"] = json::parse(R"({"self": true, "thickness": 0.002, "ccd_iterations": 12, "reuse_pairs": false})");
+  scene["contact"] = json::parse(R"({"self": true, "thickness": 0.002, "ccd_iterations": 12, "reuse_pairs": false,
+                                         "recheck_all_pairs": true})");
   const Scene s = loadScene(dir.write("scene.json", scene.dump()));
   ASSERT_EQ(s.obstacles.size(), 2u);
   EXPECT_EQ(s.obstacles[0].shape.kind, ShapeKind::Sphere);
@@ -55,6 +56,7 @@ TEST(ContactJson, ObstaclesGroundAndContactAreRead) {
   EXPECT_DOUBLE_EQ(s.contact.thickness, 0.002);
   EXPECT_EQ(s.contact.ccdIterations, 12);
   EXPECT_FALSE(s.contact.reusePairs);
+  EXPECT_TRUE(s.contact.recheckAllPairs);
 
   // The world builds them: the dynamic ball turns about its centre of mass, the sword's tags are read.
   const World world(s);
@@ -142,6 +144,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadObstacle{"UnknownContactKey", R"(scene:{"contact": {"selfie": true}})", "/contact/selfie", "allowed keys"},
         BadObstacle{"ReusePairsNotBool", R"(scene:{"contact": {"reuse_pairs": 1}})", "/contact/reuse_pairs",
                     "true or false"},
+        BadObstacle{"RecheckAllPairsNotBool", R"(scene:{"contact": {"recheck_all_pairs": "no"}})",
+                    "/contact/recheck_all_pairs", "true or false"},
         BadObstacle{"GroundHeightNaN", R"(scene:{"ground": {"height": "NaN"}})", "/ground/height", "got"},
         BadObstacle{"CollisionStageNotBool", R"(scene:{"stages": {"collision": "yes"}})", "/stages/collision",
                     "true or false"}),
