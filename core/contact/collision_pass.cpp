@@ -171,8 +171,11 @@ bool runCollisionPass(std::vector<ContactBody>& bodies, const ContactPairing& pa
     long long collisions = settings.ground != nullptr ? stopAtGround(bodies, settings, &flagged) : 0;
     counts.groundContacts += collisions;
     if (!cache || !cache->findPairs(bodies, pairing, 0.0, PairCache::Span::WholeStep, settings.h, pairs, onlyTouching)) {
-      findPrimitivePairs(bodies, pairing, 0.0, scratch, pairs);
-      if (onlyTouching) std::erase_if(pairs, [&](const PrimitivePair& p) { return !pairTouches(bodies, p, flagged); });
+      if (onlyTouching) {
+        findPrimitivePairsTouching(bodies, pairing, 0.0, flagged, pairs);
+      } else {
+        findPrimitivePairs(bodies, pairing, 0.0, scratch, pairs);
+      }
     }
     for (std::vector<char>& flags : flagged) std::fill(flags.begin(), flags.end(), char{0});
     // Only the pairs that cross in the state the iteration starts from are stopped in it: those

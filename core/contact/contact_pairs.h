@@ -25,15 +25,18 @@ struct ContactPairing {
   bool empty() const { return between.empty() && self.empty(); }
 };
 
+// A flag per vertex of each body (indexed like the bodies).
+using VertexFlags = std::vector<std::vector<char>>;
+
 // Refreshes every involved body's swept boxes (grown by margin), then lists the candidate pairs.
 void findPrimitivePairs(std::vector<ContactBody>& bodies, const ContactPairing& pairing, double margin,
                         CandidatePairs& scratch, std::vector<PrimitivePair>& out);
 
-// A flag per vertex of each body (indexed like the bodies).
-using VertexFlags = std::vector<std::vector<char>>;
-
-// Whether any vertex of the pair's two features is flagged.
-bool pairTouches(const std::vector<ContactBody>& bodies, const PrimitivePair& pair, const VertexFlags& flags);
+// The pairs findPrimitivePairs would list (or more: boxes only, no plane culling) that have a
+// flagged vertex, in its order, found from the flagged vertices' features alone: what pass 2's
+// later iterations need when few vertices moved. Refreshes the involved bodies' swept boxes.
+void findPrimitivePairsTouching(std::vector<ContactBody>& bodies, const ContactPairing& pairing, double margin,
+                                const VertexFlags& flags, std::vector<PrimitivePair>& out);
 
 // The Coulomb coefficient of a pair: the obstacle's against cloth, or cloth on cloth.
 double pairFriction(const std::vector<ContactBody>& bodies, const PrimitivePair& pair);
