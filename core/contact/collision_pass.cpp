@@ -153,11 +153,11 @@ void flagCrossingPair(const std::vector<ContactBody>& bodies, const PrimitivePai
 
 }  // namespace
 
-bool runCollisionPass(std::vector<ContactBody>& bodies, const ContactPairing& pairing,
+bool runCollisionPass(std::vector<ContactBody>& bodies, const std::vector<PairingPart>& parts,
                       const ContactStepSettings& settings, const std::vector<int>& bodyToWorldIndex,
-                      PairCache* cache, CandidatePairs& scratch, std::vector<PrimitivePair>& pairs, PassCounts& counts,
+                      CandidatePairs& scratch, std::vector<PrimitivePair>& pairs, PassCounts& counts,
                       std::vector<SharpContactRecord>& records) {
-  std::vector<PrimitivePair> crossing;
+  std::vector<PrimitivePair> crossing, partPairs;
   // After the first iteration, only a pair with a vertex flagged by the last one (stopped at the
   // ground, or in a crossing pair) can cross: every other pair is where it was when it was last
   // tested, and did not cross then. So each later iteration looks at those pairs only (Bridson,
@@ -170,12 +170,19 @@ bool runCollisionPass(std::vector<ContactBody>& bodies, const ContactPairing& pa
     const VertexFlags* onlyTouching = iteration == 0 || settings.recheckAllPairs ? nullptr : &flagged;
     long long collisions = settings.ground != nullptr ? stopAtGround(bodies, settings, &flagged) : 0;
     counts.groundContacts += collisions;
-    if (!cache || !cache->findPairs(bodies, pairing, 0.0, PairCache::Span::WholeStep, settings.h, pairs, onlyTouching)) {
-      if (onlyTouching) {
-        findPrimitivePairsTouching(bodies, pairing, 0.0, flagged, pairs);
-      } else {
-        findPrimitivePairs(bodies, pairing, 0.0, scratch, pairs);
+    pairs.clear();
+    for (const PairingPart& part : parts) {
+      if (part.pairing->empty()) continue;
+      const ContactPairing& pairing = *part.pairing;
+      if (!part.cache ||
+          !part.cache->findPairs(bodies, pairing, 0.0, PairCache::Span::WholeStep, settings.h, partPairs, onlyTouching)) {
+        if (onlyTouching) {
+          findPrimitivePairsTouching(bodies, pairing, 0.0, flagged, partPairs);
+        } else {
+          findPrimitivePairs(bodies, pairing, 0.0, scratch, partPairs);
+        }
       }
+      pairs.insert(pairs.end(), partPairs.begin(), partPairs.end());
     }
     for (std::vector<char>& flags : flagged) std::fill(flags.begin(), flags.end(), char{0});
     // Only the pairs that cross in the state the iteration starts from are stopped in it: those

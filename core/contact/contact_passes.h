@@ -57,11 +57,18 @@ struct PassCounts {
 void runProximityPass(std::vector<ContactBody>& bodies, const std::vector<NearPair>& nearPairs,
                       const ContactStepSettings& settings, PassCounts& counts);
 
-// Pass 2. Returns true when the last iteration found no collision. Each iteration takes its pairs
-// from `cache` when it can answer (null: none), else searches afresh.
-bool runCollisionPass(std::vector<ContactBody>& bodies, const ContactPairing& pairing,
+// Some of the body pairs to test, with the cache that keeps their near pairs (null: none).
+struct PairingPart {
+  const ContactPairing* pairing = nullptr;
+  PairCache* cache = nullptr;
+};
+
+// Pass 2 over the body pairs of `parts`, in that order. Returns true when the last iteration found
+// no collision. Each iteration takes a part's pairs from its cache when it can answer, else
+// searches afresh.
+bool runCollisionPass(std::vector<ContactBody>& bodies, const std::vector<PairingPart>& parts,
                       const ContactStepSettings& settings, const std::vector<int>& bodyToWorldIndex,
-                      PairCache* cache, CandidatePairs& scratch, std::vector<PrimitivePair>& pairs, PassCounts& counts,
+                      CandidatePairs& scratch, std::vector<PrimitivePair>& pairs, PassCounts& counts,
                       std::vector<SharpContactRecord>& records);
 
 // Pass 3.

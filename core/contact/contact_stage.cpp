@@ -12,28 +12,26 @@ ContactStage::ContactStage(const Scene& scene) : spec_(scene.contact), ground_(s
   if (scene.stages.collision) {
     for (int c = 0; c < clothCount; ++c) {
       if (spec_.obstacles) {
-        for (int o = 0; o < obstacleCount; ++o) {
-          pairing_.between.emplace_back(c, clothCount + o);
-          obstaclePairing_.between.emplace_back(c, clothCount + o);
-        }
+        for (int o = 0; o < obstacleCount; ++o) obstaclePairing_.between.emplace_back(c, clothCount + o);
       }
       if (spec_.self) {
-        pairing_.self.push_back(c);
         clothPairing_.self.push_back(c);
-        for (int other = c + 1; other < clothCount; ++other) {
-          pairing_.between.emplace_back(c, other);
-          clothPairing_.between.emplace_back(c, other);
-        }
+        for (int other = c + 1; other < clothCount; ++other) clothPairing_.between.emplace_back(c, other);
       }
     }
   }
+  // Every body pair: the obstacles' first, as pass 2 meets them (one part after the other).
+  pairing_ = obstaclePairing_;
+  pairing_.between.insert(pairing_.between.end(), clothPairing_.between.begin(), clothPairing_.between.end());
+  pairing_.self = clothPairing_.self;
   const bool groundRuns = scene.stages.collision && spec_.obstacles && ground_.enabled;
   if (!groundRuns) ground_.enabled = false;
   runs_ = !pairing_.empty() || groundRuns;
   selfCollision_ = !pairing_.self.empty();
-  pairCache_ = PairCache(kSkinPerThickness * spec_.thickness);
-  pairCache_.add(obstaclePairing_, holdReach());
-  pairCache_.add(clothPairing_, spec_.thickness);
+  obstacleCache_ = PairCache(kSkinPerThickness * spec_.thickness, kObstacleMostReanchoredShare);
+  obstacleCache_.add(obstaclePairing_, holdReach());
+  clothCache_ = PairCache(kSkinPerThickness * spec_.thickness);
+  clothCache_.add(clothPairing_, spec_.thickness);
   holdsVertices_ = (!obstaclePairing_.empty() || ground_.enabled) &&
                    scene.solver.integrator == IntegratorKind::LinearizedBackwardEuler;
   bodies_.resize(static_cast<std::size_t>(clothCount + obstacleCount));
@@ -92,8 +90,18 @@ void ContactStage::refreshBodies(std::vector<Cloth>& cloths, const std::vector<s
   }
 }
 
+PairCacheStats ContactStage::pairCacheStats() const {
+  PairCacheStats sum = obstacleCache_.stats();
+  const PairCacheStats& cloth = clothCache_.stats();
+  sum.uses += cloth.uses;
+  sum.served += cloth.served;
+  sum.fullBuilds += cloth.fullBuilds;
+  sum.reanchoredVertices += cloth.reanchoredVertices;
+  return sum;
+}
+
 void ContactStage::countPairCache(const PairCacheStats& before) {
-  const PairCacheStats& now = pairCache_.stats();
+  const PairCacheStats now = pairCacheStats();
   stats_.pairCache.uses += now.uses - before.uses;
   stats_.pairCache.served += now.served - before.served;
   stats_.pairCache.fullBuilds += now.fullBuilds - before.fullBuilds;
@@ -122,7 +130,7 @@ void ContactStage::resolve(std::vector<Cloth>& cloths, const std::vector<std::ve
   settings.recheckAllPairs = spec_.recheckAllPairs;
 
   PassCounts counts;
-  const PairCacheStats cacheBefore = pairCache_.stats();
+  const PairCacheStats cacheBefore = pairCacheStats();
   {
     StageTimer timer(profile, "contact_proximity");
     runProximityPass(bodies_, nearPairs_, settings, counts);
@@ -130,8 +138,9 @@ void ContactStage::resolve(std::vector<Cloth>& cloths, const std::vector<std::ve
   bool resolved = false;
   {
     StageTimer timer(profile, "contact_ccd");
-    resolved = runCollisionPass(bodies_, pairing_, settings, bodyToWorldIndex_, spec_.reusePairs ? &pairCache_ : nullptr,
-                                scratch_, pairs_, counts, records_);
+    const std::vector<PairingPart> parts{{&obstaclePairing_, spec_.reusePairs ? &obstacleCache_ : nullptr},
+                                         {&clothPairing_, spec_.reusePairs ? &clothCache_ : nullptr}};
+    resolved = runCollisionPass(bodies_, parts, settings, bodyToWorldIndex_, scratch_, pairs_, counts, records_);
   }
   if (!resolved) {
     StageTimer timer(profile, "contact_impact_zones");
@@ -160,17 +169,17 @@ void ContactStage::prepare(std::vector<Cloth>& cloths, const std::vector<std::ve
     // cloth is never held, so those pairs need only the thickness (a smaller margin finds far
     // fewer pairs in a sheet, whose neighbouring triangles all nearly touch).
     StageTimer timer(profile, "contact_start_pairs");
-    const PairCacheStats cacheBefore = pairCache_.stats();
+    const PairCacheStats cacheBefore = pairCacheStats();
     for (ContactBody& body : bodies_) body.swept.x1 = body.x0;
-    auto findStartPairs = [&](const ContactPairing& pairing, double reach) {
-      if (!spec_.reusePairs || !pairCache_.findPairs(bodies_, pairing, reach, PairCache::Span::Start, h, startPairs_)) {
+    auto findStartPairs = [&](const ContactPairing& pairing, PairCache& cache, double reach) {
+      if (!spec_.reusePairs || !cache.findPairs(bodies_, pairing, reach, PairCache::Span::Start, h, startPairs_)) {
         findPrimitivePairs(bodies_, pairing, reach, scratch_, startPairs_);
       }
     };
-    findStartPairs(obstaclePairing_, holdReach());
+    findStartPairs(obstaclePairing_, obstacleCache_, holdReach());
     measureNearPairs(bodies_, startPairs_, holdReach(), nearPairs_);
     if (!clothPairing_.empty()) {
-      findStartPairs(clothPairing_, spec_.thickness);
+      findStartPairs(clothPairing_, clothCache_, spec_.thickness);
       measureNearPairs(bodies_, startPairs_, spec_.thickness, nearClothPairs_);
       nearPairs_.insert(nearPairs_.end(), nearClothPairs_.begin(), nearClothPairs_.end());
     }

@@ -11,9 +11,6 @@
 namespace weft {
 namespace {
 
-// Above this share of the vertices re-anchored in one use, a partial update costs about what a
-// fresh search does, and the motion is not one the cache will keep up with: it steps aside.
-constexpr double kMostReanchoredShare = 0.3;
 // The longest wait (in uses) before trying to build again after stepping aside.
 constexpr int kLongestWait = 64;
 // Uses a build must serve for the wait after its step-aside to start again from one. A cloth that
@@ -277,7 +274,7 @@ long long PairCache::markDirtyVertices(const std::vector<ContactBody>& bodies, S
     }
   }
   if (!everything) {
-    if (static_cast<double>(dirty) > kMostReanchoredShare * static_cast<double>(total)) return -1;
+    if (static_cast<double>(dirty) > mostReanchoredShare_ * static_cast<double>(total)) return -1;
     stats_.reanchoredVertices += dirty;
   }
   return dirty;

@@ -42,8 +42,12 @@ struct PairCacheStats {
 
 class PairCache {
  public:
-  // skin (m) > 0: twice the radius of a moving vertex's ball.
-  explicit PairCache(double skin = 0.0) : skin_(skin) {}
+  // skin (m) > 0: twice the radius of a moving vertex's ball. mostReanchoredShare: above this share
+  // of the vertices re-anchored in one use, the cache steps aside (a partial update would cost
+  // about what a fresh search does).
+  static constexpr double kDefaultMostReanchoredShare = 0.3;
+  explicit PairCache(double skin = 0.0, double mostReanchoredShare = kDefaultMostReanchoredShare)
+      : skin_(skin), mostReanchoredShare_(mostReanchoredShare) {}
 
   // The body pairs of `pairing` will be asked for pairs within up to `reach` (m).
   void add(const ContactPairing& pairing, double reach);
@@ -140,6 +144,7 @@ class PairCache {
   std::vector<CachedPair> foundScratch_, mergeScratch_;  // search's lists, kept to reuse their buffers
   std::vector<Aabb> groupBoxes_;  // search's query boxes of one group of re-anchored features
   double skin_ = 0.0;
+  double mostReanchoredShare_ = kDefaultMostReanchoredShare;
   double largestReach_ = 0.0;
   std::vector<Entry> entries_;
   std::vector<BodyState> states_;

@@ -191,6 +191,40 @@ TEST(PairCacheTest, StepsAsideForNonFinitePositions) {
   EXPECT_TRUE(out.empty());
 }
 
+// Each cache steps aside at its own share of vertices re-anchored at once (the contact stage lets
+// the obstacles' cache go further than the cloth's): a move of 45% of all the vertices by more
+// than a ball's width is too much at the default share of 0.3, not at 0.6, and what the lenient
+// cache then answers still holds every crossing a fresh search finds.
+TEST(PairCacheTest, StepsAsideAboveItsShareOfVerticesReanchoredAtOnce) {
+  Scene scene;
+  PairCache strict(kSkin), lenient(kSkin, 0.6);
+  for (PairCache* cache : {&strict, &lenient}) cache->add(scene.obstaclePairing, kObstacleReach);
+  std::vector<PrimitivePair> out;
+  auto use = [&](PairCache& cache) {
+    return cache.findPairs(scene.bodies, scene.obstaclePairing, 0.0, PairCache::Span::WholeStep, kStep, out);
+  };
+  ASSERT_TRUE(use(strict));  // built
+  ASSERT_TRUE(use(lenient));
+  const std::size_t allVertices = scene.clothX0.size() + scene.sphereX.size();
+  const std::size_t moved = (45 * allVertices + 99) / 100;
+  ASSERT_LE(moved, scene.clothX0.size());
+  scene.clothX0 = scene.clothX1;
+  for (std::size_t i = 0; i < scene.clothX1.size(); ++i) {
+    // Down into the sphere below: some of the moved vertices cross it.
+    const Vec3 d = i < moved ? Vec3(0.0, -0.006, 0.0) : Vec3(0.0002, 0.0, 0.0);
+    scene.clothV[i] = d / kStep;
+    scene.clothX1[i] = scene.clothX0[i] + d;
+  }
+  EXPECT_FALSE(use(strict));
+  ASSERT_TRUE(use(lenient));
+  std::vector<PrimitivePair> fresh;
+  CandidatePairs scratch;
+  findPrimitivePairs(scene.bodies, scene.obstaclePairing, 0.0, scratch, fresh);
+  const PairIds freshCrossings = crossings(scene.bodies, fresh);
+  EXPECT_FALSE(freshCrossings.empty());
+  EXPECT_EQ(crossings(scene.bodies, out), freshCrossings);
+}
+
 // A cloth that jolts everything out of its balls every third use (layers jittering in a pile)
 // must not cost a full build every third use: each build abandoned that soon doubles the wait
 // before the next. Once the motion calms down, the cache answers again within the longest wait.
