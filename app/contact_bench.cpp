@@ -5,6 +5,7 @@
 #include "bench_stats.h"
 
 #include <algorithm>
+#include <array>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -42,7 +43,14 @@ struct ContactBenchRow {
   bool clean = true;  // no step left collisions unresolved
 };
 
-ContactBenchRow measure(const ContactBenchOptions& options, bool self, bool reusePairs) {
+// One case's samples, gathered step by step.
+struct CaseSamples {
+  std::vector<double> contact, step, startPairs, held, ccd;
+  ContactStats totals;
+  int vertices = 0;
+};
+
+World makeWorld(const ContactBenchOptions& options, bool self, bool reusePairs) {
   const fs::path scene = fs::path(WEFT_SOURCE_DIR) / "presets" / "scenes" / "sheet-on-sphere.json";
   const int n = options.resolution;
   const std::vector<std::string> overrides{
@@ -50,47 +58,70 @@ ContactBenchRow measure(const ContactBenchOptions& options, bool self, bool reus
       std::string("contact.self=") + (self ? "true" : "false"),
       std::string("contact.reuse_pairs=") + (reusePairs ? "true" : "false"),
       "solver.threads=" + std::to_string(options.threads)};
+  return World(loadScene(scene, overrides));
+}
+
+// Steps the world once, adding the step's stage times to `samples`.
+void timedStep(World& world, CaseSamples& samples) {
+  const StageProfile before = world.profile();
+  world.step();
+  const StageProfile& after = world.profile();
+  auto took = [&](const char* prefix) { return after.totalWithPrefix(prefix) - before.totalWithPrefix(prefix); };
+  samples.contact.push_back(took("contact_"));
+  samples.startPairs.push_back(took("contact_start_pairs"));
+  samples.held.push_back(took("contact_held"));
+  samples.ccd.push_back(took("contact_ccd"));
+  samples.step.push_back(after.total() - before.total());
+}
+
+void addCounts(const ContactStats& before, const ContactStats& after, ContactStats& totals) {
+  totals.proximityImpulses += after.proximityImpulses - before.proximityImpulses;
+  totals.ccdIterations += after.ccdIterations - before.ccdIterations;
+  totals.ccdCollisions += after.ccdCollisions - before.ccdCollisions;
+  totals.impactZoneSteps += after.impactZoneSteps - before.impactZoneSteps;
+  totals.unresolvedSteps += after.unresolvedSteps - before.unresolvedSteps;
+}
+
+ContactBenchRow summarise(const ContactBenchOptions& options, bool self, bool reusePairs, const CaseSamples& s) {
   ContactBenchRow row;
   row.self = self;
   row.reusePairs = reusePairs;
-  std::vector<double> contactSamples, stepSamples, startPairsSamples, heldSamples, ccdSamples;
-  ContactStats totals;
-  for (int repeat = 0; repeat < options.repeats; ++repeat) {
-    World world(loadScene(scene, overrides));
-    for (int s = 0; s < options.warmup; ++s) world.step();
-    const ContactStats before = world.contactStats();
-    for (int s = 0; s < options.steps; ++s) {
-      const StageProfile before = world.profile();
-      world.step();
-      const StageProfile& after = world.profile();
-      auto took = [&](const char* prefix) { return after.totalWithPrefix(prefix) - before.totalWithPrefix(prefix); };
-      contactSamples.push_back(took("contact_"));
-      startPairsSamples.push_back(took("contact_start_pairs"));
-      heldSamples.push_back(took("contact_held"));
-      ccdSamples.push_back(took("contact_ccd"));
-      stepSamples.push_back(after.total() - before.total());
-    }
-    const ContactStats& after = world.contactStats();
-    totals.proximityImpulses += after.proximityImpulses - before.proximityImpulses;
-    totals.ccdIterations += after.ccdIterations - before.ccdIterations;
-    totals.ccdCollisions += after.ccdCollisions - before.ccdCollisions;
-    totals.impactZoneSteps += after.impactZoneSteps - before.impactZoneSteps;
-    totals.unresolvedSteps += after.unresolvedSteps - before.unresolvedSteps;
-    row.vertices = world.cloth(0).vertexCount();
-  }
+  row.vertices = s.vertices;
   const double samples = static_cast<double>(options.steps) * options.repeats;
-  row.medianContactMs = median(contactSamples);
-  row.maxContactMs = *std::max_element(contactSamples.begin(), contactSamples.end());
-  row.medianStepMs = median(stepSamples);
-  row.medianStartPairsMs = median(startPairsSamples);
-  row.medianHeldMs = median(heldSamples);
-  row.medianCcdMs = median(ccdSamples);
-  row.proximityImpulsesPerStep = totals.proximityImpulses / samples;
-  row.ccdIterationsPerStep = totals.ccdIterations / samples;
-  row.ccdCollisionsPerStep = totals.ccdCollisions / samples;
-  row.impactZoneStepShare = totals.impactZoneSteps / samples;
-  row.clean = totals.unresolvedSteps == 0;
+  row.medianContactMs = median(s.contact);
+  row.maxContactMs = *std::max_element(s.contact.begin(), s.contact.end());
+  row.medianStepMs = median(s.step);
+  row.medianStartPairsMs = median(s.startPairs);
+  row.medianHeldMs = median(s.held);
+  row.medianCcdMs = median(s.ccd);
+  row.proximityImpulsesPerStep = s.totals.proximityImpulses / samples;
+  row.ccdIterationsPerStep = s.totals.ccdIterations / samples;
+  row.ccdCollisionsPerStep = s.totals.ccdCollisions / samples;
+  row.impactZoneStepShare = s.totals.impactZoneSteps / samples;
+  row.clean = s.totals.unresolvedSteps == 0;
   return row;
+}
+
+// A case with the pair cache and without it, the two worlds stepped in turn, so that both rows
+// see the same machine: its speed drifts by tens of percent within minutes, which made the ratio
+// of two cases timed one after the other unreliable.
+std::array<ContactBenchRow, 2> measure(const ContactBenchOptions& options, bool self) {
+  std::array<CaseSamples, 2> samples;  // [0] with the cache, [1] without
+  for (int repeat = 0; repeat < options.repeats; ++repeat) {
+    std::array<World, 2> worlds{makeWorld(options, self, true), makeWorld(options, self, false)};
+    for (int s = 0; s < options.warmup; ++s) {
+      for (World& world : worlds) world.step();
+    }
+    const std::array<ContactStats, 2> before{worlds[0].contactStats(), worlds[1].contactStats()};
+    for (int s = 0; s < options.steps; ++s) {
+      for (int k = 0; k < 2; ++k) timedStep(worlds[k], samples[k]);
+    }
+    for (int k = 0; k < 2; ++k) {
+      addCounts(before[k], worlds[k].contactStats(), samples[k].totals);
+      samples[k].vertices = worlds[k].cloth(0).vertexCount();
+    }
+  }
+  return {summarise(options, self, true, samples[0]), summarise(options, self, false, samples[1])};
 }
 
 }  // namespace
@@ -100,16 +131,18 @@ int runContactBench(const ContactBenchOptions& options) {
   try {
     std::printf("%-6s %-7s %8s %16s %14s %8s %8s %8s %14s %12s %10s %10s %10s\n", "self", "reuse", "vertices",
                 "contact ms/step", "max ms/step", "start", "held", "ccd", "whole ms/step", "prox imp/st", "ccd it/st", "ccd col/st", "zones/st");
-    // Each case with the pair cache and without it, one after the other: the ratio is what to
-    // read on a machine whose speed drifts.
-    for (const auto& [self, reusePairs] : {std::pair{false, true}, {false, false}, {true, true}, {true, false}}) {
-      const ContactBenchRow r = measure(options, self, reusePairs);
-      std::printf("%-6s %-7s %8d %16.3f %14.3f %8.3f %8.3f %8.3f %14.3f %12.1f %10.2f %10.2f %10.2f%s\n",
-                  r.self ? "on" : "off", r.reusePairs ? "on" : "off", r.vertices, r.medianContactMs, r.maxContactMs,
-                  r.medianStartPairsMs, r.medianHeldMs, r.medianCcdMs, r.medianStepMs, r.proximityImpulsesPerStep, r.ccdIterationsPerStep,
-                  r.ccdCollisionsPerStep, r.impactZoneStepShare, r.clean ? "" : "  (unresolved steps!)");
-      std::fflush(stdout);
-      rows.push_back(r);
+    // Each case with the pair cache and without it, stepped in turn: the ratio is what to read on
+    // a machine whose speed drifts.
+    for (const bool self : {false, true}) {
+      for (const ContactBenchRow& r : measure(options, self)) {
+        std::printf("%-6s %-7s %8d %16.3f %14.3f %8.3f %8.3f %8.3f %14.3f %12.1f %10.2f %10.2f %10.2f%s\n",
+                    r.self ? "on" : "off", r.reusePairs ? "on" : "off", r.vertices, r.medianContactMs, r.maxContactMs,
+                    r.medianStartPairsMs, r.medianHeldMs, r.medianCcdMs, r.medianStepMs, r.proximityImpulsesPerStep,
+                    r.ccdIterationsPerStep, r.ccdCollisionsPerStep, r.impactZoneStepShare,
+                    r.clean ? "" : "  (unresolved steps!)");
+        std::fflush(stdout);
+        rows.push_back(r);
+      }
     }
   } catch (const InputError& e) {
     std::cerr << "weft: " << e.what() << "\n";

@@ -12,6 +12,7 @@
 #include "contact/contact_passes.h"
 #include "contact/near_pairs.h"
 #include "support/collision_meshes.h"
+#include "support/contact_bodies.h"
 
 namespace weft {
 namespace {
@@ -44,19 +45,7 @@ struct Scene {
     clothX0 = clothX1 = cloth.x;
     clothV.assign(cloth.x.size(), Vec3::Zero());
     sphereX = sphere.x;
-    bodies.resize(2);
-    bodies[0].topology = &cloth.mesh;
-    bodies[0].x0 = &clothX0;
-    bodies[0].x1 = &clothX1;
-    bodies[0].v = &clothV;
-    bodies[1].topology = &sphere.mesh;
-    bodies[1].x0 = &sphereX;
-    bodies[1].x1 = &sphereX;
-    for (ContactBody& body : bodies) {
-      body.swept.mesh = body.topology;
-      body.swept.x0 = body.x0;
-      body.swept.x1 = body.x1;
-    }
+    bodies = {test::contactBody(cloth.mesh, clothX0, clothX1, &clothV), test::contactBody(sphere.mesh, sphereX, sphereX)};
     obstaclePairing.between.emplace_back(0, 1);
     clothPairing.self.push_back(0);
     allPairs = obstaclePairing;

@@ -9,6 +9,7 @@
 
 #include "contact/contact_pairs.h"
 #include "support/collision_meshes.h"
+#include "support/contact_bodies.h"
 
 namespace weft {
 namespace {
@@ -34,18 +35,7 @@ struct Scene {
     ballX0 = ball.x;
     ballX1 = ball.x;
     for (Vec3& p : ballX1) p += Vec3(0.0, 0.01, 0.0);
-    bodies.resize(2);
-    bodies[0].topology = &cloth.mesh;
-    bodies[0].x0 = &clothX0;
-    bodies[0].x1 = &clothX1;
-    bodies[1].topology = &ball.mesh;
-    bodies[1].x0 = &ballX0;
-    bodies[1].x1 = &ballX1;
-    for (ContactBody& body : bodies) {
-      body.swept.mesh = body.topology;
-      body.swept.x0 = body.x0;
-      body.swept.x1 = body.x1;
-    }
+    bodies = {test::contactBody(cloth.mesh, clothX0, clothX1), test::contactBody(ball.mesh, ballX0, ballX1)};
     pairing.between.emplace_back(0, 1);
     pairing.self.push_back(0);
   }
