@@ -94,8 +94,8 @@ void touchingVertexFace(const SweptMesh& a, const FlaggedFeatures& fa, const Swe
   sortUnique(out);
 }
 
-// Edges of A against edges of B with a flagged vertex on either side, as (edge of A, edge of B),
-// or through `orient` (self: smaller first).
+// Edges of A against edges of B with a flagged vertex on either side, as (edge of A, edge of B).
+// `admit` says which pairs may be listed at all (self: not an edge with itself or a neighbour).
 template <class Admit>
 void touchingEdgeEdge(const SweptMesh& a, const FlaggedFeatures& fa, const SweptMesh& b, const FlaggedFeatures& fb,
                       double margin, Admit admit, std::vector<std::array<int, 2>>& out) {

@@ -92,21 +92,11 @@ void ContactStage::refreshBodies(std::vector<Cloth>& cloths, const std::vector<s
 
 PairCacheStats ContactStage::pairCacheStats() const {
   PairCacheStats sum = obstacleCache_.stats();
-  const PairCacheStats& cloth = clothCache_.stats();
-  sum.uses += cloth.uses;
-  sum.served += cloth.served;
-  sum.fullBuilds += cloth.fullBuilds;
-  sum.reanchoredVertices += cloth.reanchoredVertices;
+  sum += clothCache_.stats();
   return sum;
 }
 
-void ContactStage::countPairCache(const PairCacheStats& before) {
-  const PairCacheStats now = pairCacheStats();
-  stats_.pairCache.uses += now.uses - before.uses;
-  stats_.pairCache.served += now.served - before.served;
-  stats_.pairCache.fullBuilds += now.fullBuilds - before.fullBuilds;
-  stats_.pairCache.reanchoredVertices += now.reanchoredVertices - before.reanchoredVertices;
-}
+void ContactStage::countPairCache(const PairCacheStats& before) { stats_.pairCache += pairCacheStats() - before; }
 
 void ContactStage::clothTopologyChanged(int cloth, const ClothMesh& mesh, const TopologyChange& change) {
   CollisionMesh& topology = clothTopology_[cloth];

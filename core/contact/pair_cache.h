@@ -38,6 +38,22 @@ struct PairCacheStats {
   long long served = 0;           // ... that the cache answered
   long long fullBuilds = 0;       // times every pair was searched afresh into the cache
   long long reanchoredVertices = 0;  // vertices re-anchored (and their features searched again) in partial updates
+
+  // Counts added or taken field by field (two caches' sums, a span of uses).
+  PairCacheStats& operator+=(const PairCacheStats& o) {
+    uses += o.uses;
+    served += o.served;
+    fullBuilds += o.fullBuilds;
+    reanchoredVertices += o.reanchoredVertices;
+    return *this;
+  }
+  friend PairCacheStats operator-(PairCacheStats a, const PairCacheStats& b) {
+    a.uses -= b.uses;
+    a.served -= b.served;
+    a.fullBuilds -= b.fullBuilds;
+    a.reanchoredVertices -= b.reanchoredVertices;
+    return a;
+  }
 };
 
 class PairCache {
