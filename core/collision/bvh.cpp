@@ -4,6 +4,7 @@
 #include <array>
 #include <cassert>
 #include <cmath>
+#include <limits>
 #include <numeric>
 #include <utility>
 
@@ -58,7 +59,36 @@ class NodePairStack {
 
 }  // namespace
 
-void Bvh::build(const std::vector<Aabb>& boxes) {
+void Bvh::build(const std::vector<Aabb>& boxes) { buildWith(boxes, nullptr); }
+
+void Bvh::build(const std::vector<Aabb>& boxes, const std::vector<Aabb>& splitBoxes) {
+  assert(splitBoxes.size() == boxes.size());
+  buildWith(boxes, &splitBoxes);
+}
+
+namespace {
+
+// Where to split the sorted slot range [begin, end) between two groups whose split boxes do not
+// overlap along `axis` (every box before the cut ends at or before every box after it starts):
+// the cut nearest the middle within the middle half, or -1 when there is none.
+int cleanCut(const std::vector<int>& order, int begin, int end, const std::vector<Aabb>& splitBoxes, int axis) {
+  const int count = end - begin;
+  std::vector<double> suffixLow(static_cast<std::size_t>(count) + 1, std::numeric_limits<double>::infinity());
+  for (int k = count - 1; k >= 0; --k) suffixLow[k] = std::min(suffixLow[k + 1], splitBoxes[order[begin + k]].lo[axis]);
+  const int middle = count / 2;
+  int best = -1;
+  double prefixHigh = -std::numeric_limits<double>::infinity();
+  for (int k = 1; k < count; ++k) {
+    prefixHigh = std::max(prefixHigh, splitBoxes[order[begin + k - 1]].hi[axis]);
+    if (4 * k < count || 4 * k > 3 * count || !(prefixHigh <= suffixLow[k])) continue;
+    if (best < 0 || std::abs(k - middle) < std::abs(best - middle)) best = k;
+  }
+  return best < 0 ? -1 : begin + best;
+}
+
+}  // namespace
+
+void Bvh::buildWith(const std::vector<Aabb>& boxes, const std::vector<Aabb>* splitBoxes) {
   const int n = static_cast<int>(boxes.size());
   nodes_.clear();
   boxCount_ = builtBoxCount_ = n;
@@ -73,7 +103,8 @@ void Bvh::build(const std::vector<Aabb>& boxes) {
   // centre; placing it at the origin keeps the ordering below a strict weak order.
   std::vector<Vec3> centres(n);
   for (int i = 0; i < n; ++i) {
-    const Vec3 c = 0.5 * (boxes[i].lo + boxes[i].hi);
+    const Aabb& b = splitBoxes ? (*splitBoxes)[i] : boxes[i];
+    const Vec3 c = 0.5 * (b.lo + b.hi);
     centres[i] = c.allFinite() ? c : Vec3::Zero();
   }
 
@@ -103,12 +134,19 @@ void Bvh::build(const std::vector<Aabb>& boxes) {
     (centreBounds.hi - centreBounds.lo).maxCoeff(&axis);  // first of equal extents: deterministic
     // Ties between equal centres go by box id: a strict total order, so which boxes fall on each
     // side of the median depends on the boxes alone.
-    const int mid = task.begin + count / 2;
-    std::nth_element(leafOrder_.begin() + task.begin, leafOrder_.begin() + mid, leafOrder_.begin() + task.end,
-                     [&](int i, int j) {
-                       const double ci = centres[i][axis], cj = centres[j][axis];
-                       return ci < cj || (ci == cj && i < j);
-                     });
+    int mid = task.begin + count / 2;
+    auto byCentre = [&](int i, int j) {
+      const double ci = centres[i][axis], cj = centres[j][axis];
+      return ci < cj || (ci == cj && i < j);
+    };
+    if (splitBoxes) {
+      std::sort(leafOrder_.begin() + task.begin, leafOrder_.begin() + task.end, byCentre);
+      const int cut = cleanCut(leafOrder_, task.begin, task.end, *splitBoxes, axis);
+      if (cut >= 0) mid = cut;
+    } else {
+      std::nth_element(leafOrder_.begin() + task.begin, leafOrder_.begin() + mid, leafOrder_.begin() + task.end,
+                       byCentre);
+    }
     tasks.push_back({mid, task.end, index});  // popped after the whole left subtree
     tasks.push_back({task.begin, mid, -1});   // popped next: becomes node index + 1
   }
@@ -169,9 +207,12 @@ void Bvh::overlappingPairs(const Bvh& other, const std::function<void(int, int)>
   traverse(other, false, visit);
 }
 
-void Bvh::selfOverlappingPairs(const std::function<void(int, int)>& visit) const { traverse(*this, true, visit); }
+void Bvh::selfOverlappingPairs(const std::function<void(int, int)>& visit, const std::vector<char>* skipInside) const {
+  traverse(*this, true, visit, skipInside);
+}
 
-void Bvh::traverse(const Bvh& other, bool selfQuery, const std::function<void(int, int)>& visit) const {
+void Bvh::traverse(const Bvh& other, bool selfQuery, const std::function<void(int, int)>& visit,
+                   const std::vector<char>* skipInside) const {
   if (nodes_.empty() || other.nodes_.empty()) return;
   NodePairStack stack;
   // Invariant: a pair on the stack is either a node with itself (self query only) or two nodes
@@ -195,6 +236,7 @@ void Bvh::traverse(const Bvh& other, bool selfQuery, const std::function<void(in
     const Node& nb = other.nodes_[b];
 
     if (selfQuery && a == b) {
+      if (skipInside && (*skipInside)[a]) continue;
       if (na.isLeaf()) {
         for (int s = na.first; s < na.first + na.count; ++s) {
           for (int t = s + 1; t < na.first + na.count; ++t) {

@@ -31,6 +31,12 @@ class Bvh {
  public:
   // Builds the tree over the boxes (leaf i = box i). Deterministic (no randomness, stable splits).
   void build(const std::vector<Aabb>& boxes);
+  // The same tree shape rules, but each range is split between two groups of `splitBoxes` (one
+  // per box: where it lies in another space, e.g. a cloth triangle's material-space box) that do
+  // not overlap along the split axis, as near the median as such a cut exists (the median where
+  // none does within the middle half). A cloth grid then splits along its grid lines, so every
+  // node holds a rectangle of whole cells (material_patches.h needs convex nodes).
+  void build(const std::vector<Aabb>& boxes, const std::vector<Aabb>& splitBoxes);
   // Same number of boxes, new extents: updates the tree bottom-up without changing its shape.
   void refit(const std::vector<Aabb>& boxes);
   // Adds box leafCount() to the leaf holding box `nearBox` (the tree must not be empty). Its
@@ -50,8 +56,23 @@ class Bvh {
 
   // Every pair (i, j), i a leaf of this tree and j a leaf of `other`, whose boxes overlap.
   void overlappingPairs(const Bvh& other, const std::function<void(int, int)>& visit) const;
-  // Every pair (i, j), i < j, of leaves of this tree whose boxes overlap.
-  void selfOverlappingPairs(const std::function<void(int, int)>& visit) const;
+  // Every pair (i, j), i < j, of leaves of this tree whose boxes overlap. With `skipInside`
+  // (a flag per node), no pair with both leaves under one flagged node is visited.
+  void selfOverlappingPairs(const std::function<void(int, int)>& visit,
+                            const std::vector<char>* skipInside = nullptr) const;
+
+  // The tree's nodes, for structures that follow its shape (material_patches.h). Node 0 is the
+  // root; children come after their parent; an internal node's left child is the next node.
+  int nodeCount() const { return static_cast<int>(nodes_.size()); }
+  bool isLeafNode(int node) const { return nodes_[node].isLeaf(); }
+  int rightChild(int node) const { return nodes_[node].first; }
+  // The boxes held by a leaf node.
+  template <class Visit>
+  void forEachBoxOfLeaf(int node, Visit&& visit) const {
+    const Node& n = nodes_[node];
+    for (int s = n.first; s < n.first + n.count; ++s) visit(leafOrder_[s]);
+  }
+  int leafOf(int box) const { return leafOfBox_[box]; }
   // Every leaf i whose box overlaps `box`, in the tree's order. (A template: it runs for a few
   // boxes at a time, where the call through a std::function would be a large share.)
   template <class Visit>
@@ -102,7 +123,9 @@ class Bvh {
   void refitNodes();
   // Both queries: a simultaneous descent of this tree and `other` (itself when selfQuery, then
   // reporting each unordered pair once, as (smaller id, larger id)).
-  void traverse(const Bvh& other, bool selfQuery, const std::function<void(int, int)>& visit) const;
+  void traverse(const Bvh& other, bool selfQuery, const std::function<void(int, int)>& visit,
+                const std::vector<char>* skipInside = nullptr) const;
+  void buildWith(const std::vector<Aabb>& boxes, const std::vector<Aabb>* splitBoxes);
 
   std::vector<Node> nodes_;      // nodes_[0] is the root (empty vector: empty tree)
   std::vector<int> leafOrder_;   // box id in each leaf slot; a leaf's boxes are contiguous slots

@@ -324,6 +324,21 @@ void sortEdgeEdgePairs(std::vector<EdgeEdgePair>& pairs, int edgeCountB) {
             [](const EdgeEdgePair& p) { return p.edgeB; });
 }
 
+// The highest certified node above each triangle's leaf (-1 when none): two triangles with the
+// same one lie in one certified node.
+std::vector<int> highestCertifiedNodes(const SweptMesh& swept, const std::vector<char>& certified) {
+  const Bvh& tree = swept.bvh;
+  const std::vector<int>& parent = swept.features.patches.parent;
+  std::vector<int> highest(certified.size(), -1);
+  for (int n = 0; n < tree.nodeCount(); ++n) {  // parents first
+    const int above = parent[n] >= 0 ? highest[parent[n]] : -1;
+    highest[n] = above >= 0 ? above : (certified[n] ? n : -1);
+  }
+  std::vector<int> perTriangle(swept.mesh->triangles.size(), -1);
+  for (std::size_t t = 0; t < perTriangle.size(); ++t) perTriangle[t] = highest[tree.leafOf(static_cast<int>(t))];
+  return perTriangle;
+}
+
 int triangleCount(const SweptMesh& swept) { return static_cast<int>(swept.mesh->triangles.size()); }
 int edgeCount(const SweptMesh& swept) { return static_cast<int>(swept.mesh->edges.size()); }
 
@@ -366,7 +381,13 @@ void updateSweptMesh(SweptMesh& swept, double margin) {
   // neighbourhoods). Comparing the triangle lists costs about a memcmp of them.
   SweptFeatures& features = swept.features;
   if (!isUpToDate(swept)) {
-    swept.bvh.build(swept.triangleBoxes);
+    if (swept.rest && swept.rest->size() == count) {
+      swept.bvh.build(swept.triangleBoxes, materialBoxes(*swept.rest));
+      buildMaterialPatches(swept.bvh, mesh, *swept.rest, features.patches);
+    } else {
+      swept.bvh.build(swept.triangleBoxes);
+      features.patches = MaterialPatches();
+    }
     features.triangles = mesh.triangles;
     groupByOwner(mesh.triangles, mesh.vertexOwner, features.vertices);
     groupByOwner(mesh.triangleEdges, mesh.edgeOwner, features.edges);
@@ -430,7 +451,10 @@ void patchSweptMesh(SweptMesh& swept, const CollisionMeshChange& change) {
   }
 
   features.triangles.resize(triangleCount);
-  for (int t : change.changedTriangles) features.triangles[t] = mesh.triangles[t];
+  for (int t : change.changedTriangles) {
+    features.triangles[t] = mesh.triangles[t];
+    forgetPatchesAbove(swept.bvh, t, features.patches);
+  }
   std::vector<int> mine;
   for (auto [owned, featuresOfTriangle, owner] :
        {std::tuple{&features.vertices, &mesh.triangles, &mesh.vertexOwner},
@@ -512,17 +536,38 @@ void findSelfCandidatePairs(const SweptMesh& a, double margin, CandidatePairs& o
       }
       distantCount = 0;
     };
-    a.bvh.selfOverlappingPairs([&](int i, int j) {
-      distant[distantCount] = {i, j};
-      distantCount += shareCorner(triangles[i], triangles[j]) ? 0 : 1;
-      if (distantCount == static_cast<int>(distant.size())) processDistant();
-    });
+    // Nodes certified for this margin over the step hold no pair that can come within it: the
+    // tree skips their insides, and the neighbour lists the triangles whose neighbours all lie in
+    // the same certified node.
+    const bool culling = a.rest != nullptr && !features.patches.empty();
+    std::vector<char> certified;
+    if (culling) certifyPatches(features.patches, a.bvh, *a.mesh, *a.rest, *a.x0, *a.x1, margin, certified);
+    a.bvh.selfOverlappingPairs(
+        [&](int i, int j) {
+          distant[distantCount] = {i, j};
+          distantCount += shareCorner(triangles[i], triangles[j]) ? 0 : 1;
+          if (distantCount == static_cast<int>(distant.size())) processDistant();
+        },
+        culling ? &certified : nullptr);
     processDistant();
+    std::vector<int> certifiedAbove;  // per triangle: its highest certified node (-1: none)
+    if (culling) certifiedAbove = highestCertifiedNodes(a, certified);
+    auto insideOneCertifiedNode = [&](int i) {
+      const int node = certifiedAbove[i];
+      if (node < 0) return false;
+      for (int v : triangles[i]) {
+        for (int j : a.mesh->trianglesAround[v]) {
+          if (certifiedAbove[j] != node) return false;
+        }
+      }
+      return true;
+    };
     // Triangles sharing a corner: their candidates are listed, only the boxes are tested. (Plane
     // tests would cull few of them: in a smooth sheet neighbours lie in nearly the same plane.)
     const TriangleRuns<std::array<int, 2>>& vertexFace = features.neighbourVertexFace;
     const TriangleRuns<std::array<int, 2>>& edgeEdge = features.neighbourEdgeEdge;
     for (size_t i = 0; i < triangles.size(); ++i) {
+      if (culling && insideOneCertifiedNode(static_cast<int>(i))) continue;
       for (int k = vertexFace.begin[i]; k < vertexFace.end[i]; ++k) {
         const auto [slot, face] = vertexFace.items[k];
         vf.reserve(1);

@@ -8,6 +8,7 @@
 
 #include "collision/bvh.h"
 #include "collision/collision_mesh.h"
+#include "collision/material_patches.h"
 #include "collision/triangle_runs.h"
 
 namespace weft {
@@ -31,6 +32,9 @@ struct SweptFeatures {
   // its pairs (i, j > i). Entries index the slots above:
   TriangleRuns<std::array<int, 2>> neighbourVertexFace;  // (slot in vertices, face)
   TriangleRuns<std::array<int, 2>> neighbourEdgeEdge;    // (slot in edges, slot in edges)
+  // For a cloth (SweptMesh::rest set): what each BVH node's triangles tile in material space, so
+  // that findSelfCandidatePairs can skip the nodes too little deformed to touch themselves.
+  MaterialPatches patches;
 };
 
 // The plane of a triangle that does not move over the step (a static obstacle's, or any triangle
@@ -55,6 +59,9 @@ struct SweptMesh {
   bool hasFixedPlanes = false;      // some triangle has a plane
   Bvh bvh;
   SweptFeatures features;  // maintained by updateSweptMesh
+  // A cloth's material-space triangle corners (null for an obstacle): its BVH is then split along
+  // material-space cuts, and self-collision searches skip certified nodes (material_patches.h).
+  const RestCorners* rest = nullptr;
 };
 
 // Recomputes the triangle boxes (x0, x1, grown by `margin`), the feature boxes and the fixed
@@ -102,6 +109,8 @@ void findCandidatePairs(const SweptMesh& a, const SweptMesh& b, double margin, C
 
 // Within one mesh: vertex-face pairs where the vertex is not a corner of the face, and edge-edge
 // pairs of edges that share no vertex (in vfAB and ee; vfBA stays empty; ee has edgeA < edgeB).
+// For a cloth with rest corners, pairs inside a node certified for the margin over the step
+// (material_patches.h) are left out: they provably never come within the margin.
 void findSelfCandidatePairs(const SweptMesh& a, double margin, CandidatePairs& out);
 
 }  // namespace weft

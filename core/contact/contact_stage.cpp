@@ -5,6 +5,14 @@
 #include "sim/cloth.h"
 
 namespace weft {
+namespace {
+
+void copyRestCorners(const ClothMesh& mesh, RestCorners& out) {
+  out.resize(mesh.tris.size());
+  for (std::size_t t = 0; t < mesh.tris.size(); ++t) out[t] = mesh.tris[t].rest;
+}
+
+}  // namespace
 
 ContactStage::ContactStage(const Scene& scene) : spec_(scene.contact), ground_(scene.ground) {
   const int clothCount = static_cast<int>(scene.cloths.size());
@@ -36,6 +44,7 @@ ContactStage::ContactStage(const Scene& scene) : spec_(scene.contact), ground_(s
                    scene.solver.integrator == IntegratorKind::LinearizedBackwardEuler;
   bodies_.resize(static_cast<std::size_t>(clothCount + obstacleCount));
   clothTopology_.resize(static_cast<std::size_t>(clothCount));
+  clothRest_.resize(static_cast<std::size_t>(clothCount));
   clothInverseMass_.resize(static_cast<std::size_t>(clothCount));
   for (int c = 0; c < clothCount; ++c) bodyToWorldIndex_.push_back(c);
   for (int o = 0; o < obstacleCount; ++o) bodyToWorldIndex_.push_back(o);
@@ -56,6 +65,7 @@ void ContactStage::refreshBodies(std::vector<Cloth>& cloths, const std::vector<s
     if (topology.vertexCount != mesh.vertexCount() ||
         topology.triangles.size() != static_cast<std::size_t>(mesh.triangleCount())) {
       topology = makeClothCollisionMesh(mesh);
+      copyRestCorners(mesh, clothRest_[c]);
     }
     std::vector<double>& inverseMass = clothInverseMass_[c];
     inverseMass.resize(static_cast<std::size_t>(mesh.vertexCount()));
@@ -73,6 +83,7 @@ void ContactStage::refreshBodies(std::vector<Cloth>& cloths, const std::vector<s
     body.swept.mesh = &topology;
     body.swept.x0 = body.x0;
     body.swept.x1 = body.x1;
+    body.swept.rest = &clothRest_[c];
   }
   for (std::size_t o = 0; o < obstacles.size(); ++o) {
     Obstacle& obstacle = obstacles[o];
@@ -87,6 +98,7 @@ void ContactStage::refreshBodies(std::vector<Cloth>& cloths, const std::vector<s
     body.swept.mesh = &obstacle.topology;
     body.swept.x0 = body.x0;
     body.swept.x1 = body.x1;
+    body.swept.rest = nullptr;
   }
 }
 
@@ -102,6 +114,7 @@ void ContactStage::clothTopologyChanged(int cloth, const ClothMesh& mesh, const 
   CollisionMesh& topology = clothTopology_[cloth];
   if (topology.triangles.empty()) return;  // not built yet: refreshBodies builds it
   const CollisionMeshChange edit = updateClothCollisionMesh(topology, mesh, change);
+  copyRestCorners(mesh, clothRest_[cloth]);
   SweptMesh& swept = bodies_[cloth].swept;
   if (swept.mesh == &topology) patchSweptMesh(swept, edit);
 }

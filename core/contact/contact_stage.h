@@ -90,6 +90,7 @@ class ContactStage {
   // One body per cloth, then one per obstacle; kept between steps for their BVHs.
   std::vector<ContactBody> bodies_;
   std::vector<CollisionMesh> clothTopology_;
+  std::vector<RestCorners> clothRest_;  // each cloth's material-space triangle corners, kept with its topology
   std::vector<std::vector<double>> clothInverseMass_;
   std::vector<int> bodyToWorldIndex_;
   ContactPairing pairing_;
