@@ -541,7 +541,7 @@ void findSelfCandidatePairs(const SweptMesh& a, double margin, CandidatePairs& o
     // the same certified node.
     const bool culling = a.rest != nullptr && !features.patches.empty();
     std::vector<char> certified;
-    if (culling) certifyPatches(features.patches, a.bvh, *a.mesh, *a.rest, *a.x0, *a.x1, margin, certified);
+    if (culling) certifyPatches(features.patches, a.bvh, *a.mesh, *a.x0, *a.x1, margin, certified);
     a.bvh.selfOverlappingPairs(
         [&](int i, int j) {
           distant[distantCount] = {i, j};
@@ -550,17 +550,25 @@ void findSelfCandidatePairs(const SweptMesh& a, double margin, CandidatePairs& o
         },
         culling ? &certified : nullptr);
     processDistant();
-    std::vector<int> certifiedAbove;  // per triangle: its highest certified node (-1: none)
-    if (culling) certifiedAbove = highestCertifiedNodes(a, certified);
+    // A triangle whose corners' triangles all share its highest certified node has every
+    // neighbour pair inside that node.
+    std::vector<int> certifiedAbove, cornerNode;  // per triangle / per vertex (-1: none, or mixed)
+    if (culling) {
+      certifiedAbove = highestCertifiedNodes(a, certified);
+      cornerNode.assign(static_cast<std::size_t>(a.mesh->vertexCount), -1);
+      for (int v = 0; v < a.mesh->vertexCount; ++v) {
+        const std::vector<int>& around = a.mesh->trianglesAround[v];
+        if (around.empty()) continue;
+        const int node = certifiedAbove[around.front()];
+        bool shared = true;
+        for (int j : around) shared = shared && certifiedAbove[j] == node;
+        cornerNode[v] = shared ? node : -1;
+      }
+    }
     auto insideOneCertifiedNode = [&](int i) {
       const int node = certifiedAbove[i];
-      if (node < 0) return false;
-      for (int v : triangles[i]) {
-        for (int j : a.mesh->trianglesAround[v]) {
-          if (certifiedAbove[j] != node) return false;
-        }
-      }
-      return true;
+      const auto& c = triangles[i];
+      return node >= 0 && cornerNode[c[0]] == node && cornerNode[c[1]] == node && cornerNode[c[2]] == node;
     };
     // Triangles sharing a corner: their candidates are listed, only the boxes are tested. (Plane
     // tests would cull few of them: in a smooth sheet neighbours lie in nearly the same plane.)

@@ -14,6 +14,9 @@ namespace {
 constexpr double kGradientSlack = 1e-8;
 // Relative rounding allowed when comparing a node's summed areas and boundary with its hull's.
 constexpr double kTilingTolerance = 1e-9;
+// Largest node (triangles) given the sharper check over its own triangles: beyond it the pass
+// costs more than the search it could save, and bends that large rarely certify.
+constexpr int kLargestSharpCheck = 512;
 
 double cross2(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
 
@@ -75,19 +78,22 @@ double smallestSingularValue(const Gradient& c) {
   return std::sqrt(std::max(smallest, 0.0));
 }
 
-// The deformation gradient of a triangle with world corners x and material corners r (Dm^-1
-// form, as the membrane elements use); NaN when the rest shape is degenerate or inverted.
-Gradient deformationGradient(const std::array<int, 3>& corners, const std::array<Vec2, 3>& r,
-                             const std::vector<Vec3>& x) {
+// The inverse of a rest shape's edge matrix; NaN when the shape is degenerate or inverted.
+Mat2 restEdgesInverse(const std::array<Vec2, 3>& r) {
   Mat2 dm;
   dm.col(0) = r[1] - r[0];
   dm.col(1) = r[2] - r[0];
-  const double det = dm.determinant();
-  if (!(det > 0.0)) return Gradient::Constant(std::numeric_limits<double>::quiet_NaN());
+  if (!(dm.determinant() > 0.0)) return Mat2::Constant(std::numeric_limits<double>::quiet_NaN());
+  return dm.inverse();
+}
+
+// The deformation gradient of a triangle with world corners x: Ds Dm^-1, as the membrane
+// elements compute it.
+Gradient deformationGradient(const std::array<int, 3>& corners, const Mat2& restInverse, const std::vector<Vec3>& x) {
   Gradient ds;
   ds.col(0) = x[corners[1]] - x[corners[0]];
   ds.col(1) = x[corners[2]] - x[corners[0]];
-  return ds * dm.inverse();
+  return ds * restInverse;
 }
 
 }  // namespace
@@ -123,6 +129,8 @@ void buildMaterialPatches(const Bvh& tree, const CollisionMesh& mesh, const Rest
       }
     }
   }
+  patches.restInverse.resize(static_cast<std::size_t>(triangles));
+  for (int t = 0; t < triangles; ++t) patches.restInverse[t] = restEdgesInverse(rest[t]);
   std::vector<char> usable(static_cast<std::size_t>(triangles), 0);
   std::vector<double> area(static_cast<std::size_t>(triangles), 0.0), altitude(area);
   for (int t = 0; t < triangles; ++t) {
@@ -135,7 +143,12 @@ void buildMaterialPatches(const Bvh& tree, const CollisionMesh& mesh, const Rest
   }
 
   // Leaves in tree order: each node's triangles are one run of `order` (nodes are depth first).
-  std::vector<int> order, begin(static_cast<std::size_t>(nodes)), end(static_cast<std::size_t>(nodes));
+  std::vector<int>& order = patches.triangles;
+  std::vector<int>& begin = patches.first;
+  std::vector<int>& end = patches.last;
+  order.clear();
+  begin.assign(static_cast<std::size_t>(nodes), 0);
+  end.assign(static_cast<std::size_t>(nodes), 0);
   for (int n = 0; n < nodes; ++n) {
     if (!tree.isLeafNode(n)) {
       patches.parent[n + 1] = patches.parent[tree.rightChild(n)] = n;
@@ -198,24 +211,37 @@ void forgetPatchesAbove(const Bvh& tree, int triangle, MaterialPatches& patches)
 }
 
 void certifyPatches(const MaterialPatches& patches, const Bvh& tree, const CollisionMesh& mesh,
-                    const RestCorners& rest, const std::vector<Vec3>& x0, const std::vector<Vec3>& x1,
-                    double margin, std::vector<char>& certified) {
+                    const std::vector<Vec3>& x0, const std::vector<Vec3>& x1, double margin,
+                    std::vector<char>& certified) {
   const int nodes = tree.nodeCount();
   certified.assign(static_cast<std::size_t>(nodes), 0);
   if (patches.empty() || static_cast<int>(patches.parent.size()) != nodes) return;
+  const bool oneInstant = &x1 == &x0;
+  const std::size_t triangleCount = mesh.triangles.size();
+  std::vector<Gradient> start(triangleCount), finish(oneInstant ? 0 : triangleCount);
+  const std::size_t built = std::min(triangleCount, patches.restInverse.size());
+  for (std::size_t t = 0; t < built; ++t) {
+    start[t] = deformationGradient(mesh.triangles[t], patches.restInverse[t], x0);
+    if (!oneInstant) finish[t] = deformationGradient(mesh.triangles[t], patches.restInverse[t], x1);
+  }
+  for (std::size_t t = built; t < triangleCount; ++t) {  // added since the build: only in forgotten nodes
+    start[t] = Gradient::Constant(std::numeric_limits<double>::quiet_NaN());
+    if (!oneInstant) finish[t] = start[t];
+  }
+  // The sharper bound's deviation of triangle t from C, in C's column space (both ends of the step).
+  auto deviation = [&](const Eigen::Matrix<double, 2, 3>& qt, const Gradient& c, int t) {
+    const double d = (qt * (start[t] - c)).norm();
+    return oneInstant ? d : std::max(d, (qt * (finish[t] - c)).norm());
+  };
   std::vector<GradientBall> balls(static_cast<std::size_t>(nodes));
   // Children come after their parent: a backwards sweep meets both children first.
   for (int n = nodes - 1; n >= 0; --n) {
     GradientBall ball;
-    if (tree.isLeafNode(n)) {
+    const bool leaf = tree.isLeafNode(n);
+    if (leaf) {
       tree.forEachBoxOfLeaf(n, [&](int t) {
-        const Gradient start = deformationGradient(mesh.triangles[t], rest[t], x0);
-        if (&x1 == &x0) {
-          ball = merge(ball, {start, 0.0});
-          return;
-        }
-        const Gradient finish = deformationGradient(mesh.triangles[t], rest[t], x1);
-        ball = merge(ball, {0.5 * (start + finish), 0.5 * (finish - start).norm()});
+        ball = merge(ball, oneInstant ? GradientBall{start[t], 0.0}
+                                      : GradientBall{0.5 * (start[t] + finish[t]), 0.5 * (finish[t] - start[t]).norm()});
       });
       // (A NaN gradient, from a degenerate rest shape or position, leaves a NaN radius: never certified.)
     } else {
@@ -223,8 +249,26 @@ void certifyPatches(const MaterialPatches& patches, const Bvh& tree, const Colli
     }
     balls[n] = ball;
     if (!patches.tilesConvexRegion[n]) continue;
-    const double stretch = smallestSingularValue(ball.centre) - ball.radius - kGradientSlack;
-    certified[n] = stretch * patches.smallestAltitude[n] > margin;
+    const double smallest = smallestSingularValue(ball.centre);
+    const double needed = margin / patches.smallestAltitude[n] + kGradientSlack;  // of the stretch bound
+    if (smallest - ball.radius > needed) {
+      certified[n] = 1;
+      continue;
+    }
+    const int size = patches.last[n] - patches.first[n];
+    if (size > kLargestSharpCheck || !(smallest > needed) ||
+        (!leaf && !(certified[n + 1] && certified[tree.rightChild(n)]))) {
+      continue;
+    }
+    // Q^T: the orthonormal basis of C's columns (Gram-Schmidt), as rows.
+    Eigen::Matrix<double, 2, 3> qt;
+    qt.row(0) = ball.centre.col(0).normalized().transpose();
+    qt.row(1) = (ball.centre.col(1) - qt.row(0).dot(ball.centre.col(1)) * qt.row(0).transpose()).normalized().transpose();
+    double largest = 0.0;
+    for (int k = patches.first[n]; k < patches.last[n] && smallest - largest > needed; ++k) {
+      largest = std::max(largest, deviation(qt, ball.centre, patches.triangles[k]));
+    }
+    certified[n] = smallest - largest > needed;  // (false for NaN)
   }
 }
 

@@ -18,7 +18,14 @@
 // (The same bi-Lipschitz reasoning underlies energy-based self-collision culling, Zheng & James
 // 2012; this form needs no contour test, as the region is convex.)
 //
-// The tiling is checked once per tree build (MaterialPatches), the balls every search (certify).
+// The ball bound is loose where a patch bends (a rotation moves F far in every direction), so a
+// node the ball cannot certify, whose children are certified, is checked once more with a
+// sharper bound over its own triangles: with Q an orthonormal basis of C's columns, and n = Cu/|Cu|
+// for a material direction u, n . (M u) >= |Cu| - max |Q^T (F - C)| for any average M of the
+// node's F, so (sigma_min(C) - max_t |Q^T (F_t - C)|) bounds the stretch instead. Bending moves F
+// out of C's column space, which this bound barely sees.
+//
+// The tiling is checked once per tree build (MaterialPatches), the bounds every search (certify).
 #include <array>
 #include <vector>
 
@@ -36,6 +43,13 @@ struct MaterialPatches {
   std::vector<char> tilesConvexRegion;   // its triangles tile a convex region with no slit
   std::vector<double> smallestAltitude;  // of its triangles, in material space (m)
   std::vector<int> parent;               // -1 for the root
+  // The node's triangles: triangles[first[n] .. last[n]) (as built; a node a topology edit has
+  // since touched no longer tiles, so its run is never read).
+  std::vector<int> triangles, first, last;
+  // Per triangle as built: the inverse of its rest edge matrix [r1 - r0, r2 - r0] (NaN when
+  // degenerate). A triangle a later edit changed or added may be read stale or not at all: every
+  // node holding it was forgotten, so no certificate depends on it.
+  std::vector<Mat2> restInverse;
   bool empty() const { return parent.empty(); }
 };
 
@@ -55,7 +69,7 @@ void forgetPatchesAbove(const Bvh& tree, int triangle, MaterialPatches& patches)
 // `margin` to spare. A flagged node has no pair of features sharing no vertex within `margin`
 // of each other during the step.
 void certifyPatches(const MaterialPatches& patches, const Bvh& tree, const CollisionMesh& mesh,
-                    const RestCorners& rest, const std::vector<Vec3>& x0, const std::vector<Vec3>& x1,
-                    double margin, std::vector<char>& certified);
+                    const std::vector<Vec3>& x0, const std::vector<Vec3>& x1, double margin,
+                    std::vector<char>& certified);
 
 }  // namespace weft

@@ -14,6 +14,8 @@
 #include "mesh/grid.h"
 #include "support/candidate_pair_reference.h"
 
+#include <Eigen/SVD>
+
 namespace weft {
 namespace {
 
@@ -105,8 +107,54 @@ TEST(MaterialPatches, ASlitInsideANodeBreaksItsTilingButNotTheNodesAwayFromIt) {
   std::vector<Vec3> x = grid.x;
   for (std::size_t v = static_cast<std::size_t>(n * n); v < x.size(); ++v) x[v].z() += 0.0005;
   std::vector<char> certified;
-  certifyPatches(patches, swept.bvh, grid.mesh, grid.rest, x, x, 0.001, certified);
+  certifyPatches(patches, swept.bvh, grid.mesh, x, x, 0.001, certified);
   EXPECT_FALSE(certified[0]);
+}
+
+// A sheet creased along x = 0.5, its left half turned up by 60 degrees and stretched by 0.9
+// across the crease: two deformation gradients, F on the left and the identity on the right.
+// The ball around them is too wide to certify the whole sheet, the bound in C's column space
+// (C their mean) is not: the sheet is certified just below that bound and not just above it, and
+// the bound holds for sampled material point pairs.
+TEST(MaterialPatches, ACreasedSheetIsCertifiedUpToTheBoundInItsMeanGradientsPlane) {
+  const ClothGrid grid = clothGrid(9);
+  const double angle = M_PI / 3.0, stretch = 0.9;
+  const Vec3 turned(std::cos(angle), 0.0, std::sin(angle));
+  auto place = [&](const Vec2& m) {
+    return m.x() >= 0.5 ? Vec3(m.x(), m.y(), 0.0) : Vec3(0.5, m.y(), 0.0) + stretch * (0.5 - m.x()) * -turned;
+  };
+  std::vector<Vec3> x(grid.x.size());
+  for (std::size_t v = 0; v < x.size(); ++v) x[v] = place(Vec2(grid.x[v].x(), grid.x[v].y()));
+  // The expected bound, from the two gradients (Jacobi SVD for sigma_min).
+  Eigen::Matrix<double, 3, 2> left, right, mean;
+  left << stretch * turned, Vec3::UnitY();
+  right << Vec3::UnitX(), Vec3::UnitY();
+  mean = 0.5 * (left + right);
+  Eigen::Matrix<double, 3, 2> basis;
+  basis.col(0) = mean.col(0).normalized();
+  basis.col(1) = (mean.col(1) - basis.col(0).dot(mean.col(1)) * basis.col(0)).normalized();
+  const double deviation =
+      std::max((basis.transpose() * (left - mean)).norm(), (basis.transpose() * (right - mean)).norm());
+  const double sigma = Eigen::JacobiSVD<Eigen::Matrix<double, 3, 2>>(mean).singularValues()(1);
+  const double bound = sigma - deviation;
+  ASSERT_GT(bound, 0.5);
+  ASSERT_LT(sigma - 0.5 * (left - right).norm(), 0.5 * bound) << "the ball alone would certify it";
+
+  const SweptMesh swept = sweptCloth(grid.mesh, x, x, &grid.rest, 0.0);
+  const double altitude = swept.features.patches.smallestAltitude[0];
+  std::vector<char> certified;
+  certifyPatches(swept.features.patches, swept.bvh, grid.mesh, x, x, 0.98 * bound * altitude, certified);
+  EXPECT_TRUE(certified[0]);
+  certifyPatches(swept.features.patches, swept.bvh, grid.mesh, x, x, 1.02 * bound * altitude, certified);
+  EXPECT_FALSE(certified[0]);
+  EXPECT_TRUE(certified[1] && certified[swept.bvh.rightChild(0)]) << "each flat half on its own";
+
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (int k = 0; k < 2000; ++k) {
+    const Vec2 p(unit(rng), unit(rng)), q(unit(rng), unit(rng));
+    EXPECT_GE((place(p) - place(q)).norm(), bound * (p - q).norm() - 1e-12);
+  }
 }
 
 using Pair = std::pair<int, int>;
