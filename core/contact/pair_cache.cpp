@@ -107,7 +107,7 @@ void PairCache::stepAside() {
   // A build that served for a while since starts the waits again from one; one that stepped
   // aside soon after it was made waits twice as long as the last time.
   if (usesSinceBuild_ >= kUsesToTrust) backOff_ = 1;
-  waitUses_ = backOff_;
+  waitUses_ = quietNeeded_ = backOff_;
   backOff_ = std::min(2 * backOff_, kLongestWait);
 }
 
@@ -196,7 +196,7 @@ bool PairCache::refresh(const std::vector<ContactBody>& bodies, Span span, doubl
   const bool everything = !built_;
   if (everything) {
     if (waitUses_ > 0) {
-      --waitUses_;
+      waitUses_ = wouldHaveAnswered(bodies, span, h) ? waitUses_ - 1 : quietNeeded_;
       return false;
     }
     for (std::size_t s = 0; s < states_.size(); ++s) {
@@ -225,7 +225,23 @@ bool PairCache::refresh(const std::vector<ContactBody>& bodies, Span span, doubl
   return true;
 }
 
-long long PairCache::markDirtyVertices(const std::vector<ContactBody>& bodies, Span span, double h, bool everything) {
+bool PairCache::wouldHaveAnswered(const std::vector<ContactBody>& bodies, Span span, double h) {
+  for (std::size_t s = 0; s < states_.size(); ++s) {
+    BodyState& state = states_[s];
+    if (!state.involved) continue;
+    const ContactBody& body = bodies[s];
+    if (!state.builtOn.matches(*body.topology) || state.anchor.size() != body.x0->size()) {
+      // A new topology: anchors at the start positions, each moved out of its (empty) ball.
+      state.builtOn = MeshStamp(*body.topology);
+      state.anchor = *body.x0;
+      state.radius.assign(state.anchor.size(), 0.0);
+    }
+  }
+  return markDirtyVertices(bodies, span, h, false, true) >= 0;
+}
+
+long long PairCache::markDirtyVertices(const std::vector<ContactBody>& bodies, Span span, double h, bool everything,
+                                       bool probing) {
   const double halfSkin = 0.5 * skin_;
   long long total = 0, dirty = 0;
   for (std::size_t s = 0; s < states_.size(); ++s) {
@@ -275,7 +291,7 @@ long long PairCache::markDirtyVertices(const std::vector<ContactBody>& bodies, S
   }
   if (!everything) {
     if (static_cast<double>(dirty) > mostReanchoredShare_ * static_cast<double>(total)) return -1;
-    stats_.reanchoredVertices += dirty;
+    if (!probing) stats_.reanchoredVertices += dirty;
   }
   return dirty;
 }

@@ -16,8 +16,11 @@
 // A vertex that leaves its ball is re-anchored, and only the pairs of the features around it are
 // searched again (each such feature against the other body's tree of anchored feature boxes).
 // When too many vertices move at once (a falling cloth, a fast tool), or the topology changes (a
-// tear, a cut), the cache steps aside and the callers search afresh (findPrimitivePairs). It
-// builds again after a wait, which doubles each time a build is abandoned soon after it was made.
+// tear, a cut), the cache steps aside and the callers search afresh (findPrimitivePairs). Aside,
+// it keeps moving its anchors as it would when built (a pass over the vertices, no search), and
+// builds again only after a run of uses it would have answered; the run it asks for doubles each
+// time a build is abandoned soon after it was made, so a cloth that keeps jolting (layers
+// jittering in a fold) does not pay for builds that cannot last.
 //
 // The pairs come out in the order findPrimitivePairs gives them (body pairs in pairing order; in
 // each, vertex-face pairs by vertex then face, then face-vertex pairs, then edge-edge pairs), so
@@ -146,7 +149,12 @@ class PairCache {
   // Re-anchors the vertices that left their balls (every vertex when `everything`); returns how
   // many, or -1 when the cache cannot answer (a non-finite position, or too many vertices on the
   // move).
-  long long markDirtyVertices(const std::vector<ContactBody>& bodies, Span span, double h, bool everything);
+  // `probing`: while stepped aside, the anchors only follow the motion (nothing is counted).
+  long long markDirtyVertices(const std::vector<ContactBody>& bodies, Span span, double h, bool everything,
+                              bool probing = false);
+  // While stepped aside: moves the anchors as a built cache would and says whether it would have
+  // answered this use (few enough vertices left their balls).
+  bool wouldHaveAnswered(const std::vector<ContactBody>& bodies, Span span, double h);
   void updateTrees(const std::vector<ContactBody>& bodies, bool everything);
   // The edges and faces with a re-anchored vertex (every feature when `everything`), flagged and
   // listed (in no particular order), with the re-anchored vertices' list.
@@ -165,7 +173,8 @@ class PairCache {
   std::vector<Entry> entries_;
   std::vector<BodyState> states_;
   bool built_ = false;
-  int waitUses_ = 0;   // uses left before trying to build again
+  int waitUses_ = 0;   // answerable uses in a row still needed before building again
+  int quietNeeded_ = 0;  // ... all of them, since the last step aside
   int backOff_ = 1;    // the next wait
   int usesSinceBuild_ = 0;  // uses served since the last build
   PairCacheStats stats_;

@@ -243,5 +243,29 @@ TEST(PairCacheTest, WaitsLongerEachTimeABuildIsAbandonedSoon) {
   EXPECT_GE(cache.stats().served - servedBefore, calmUses - 70);  // the longest wait is 64 uses
 }
 
+// Stepped aside, the cache follows the motion without searching, and builds again only after a
+// run of uses it could have answered (the run doubling with each build abandoned soon): a cloth
+// jolting every third use lets a run of two through, never one of four, so after the builds
+// that end the runs of one and two it builds no more until the jolts stop.
+TEST(PairCacheTest, BuildsAgainOnlyAfterARunOfUsesItCouldHaveAnswered) {
+  Scene scene;
+  PairCache cache(kSkin);
+  cache.add(scene.obstaclePairing, kObstacleReach);
+  std::mt19937 rng(5);
+  std::vector<PrimitivePair> out;
+  auto use = [&](double jolt) {
+    scene.advance(rng, jolt, 0.0002);
+    return cache.findPairs(scene.bodies, scene.obstaclePairing, kObstacleReach, PairCache::Span::WholeStep, kStep, out);
+  };
+  for (int k = 0; k < 300; ++k) use(k % 3 == 0 ? 0.03 : 0.0002);
+  EXPECT_LE(cache.stats().fullBuilds, 3) << "a build every time a wait ran out would make about ten";
+  // Calm again: the run of four quiet uses, then a build that answers.
+  const long long builds = cache.stats().fullBuilds;
+  int answered = 0;
+  for (int k = 0; k < 10; ++k) answered += use(0.0002) ? 1 : 0;
+  EXPECT_EQ(cache.stats().fullBuilds, builds + 1);
+  EXPECT_GE(answered, 5);
+}
+
 }  // namespace
 }  // namespace weft
