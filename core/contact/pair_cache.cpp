@@ -11,13 +11,9 @@
 namespace weft {
 namespace {
 
-// The longest run of uses it could have answered that the cache asks for, stepped aside, before
-// building again.
+// The longest wait (in uses) before trying to build again after stepping aside.
 constexpr int kLongestWait = 64;
-// The largest ball (in half skins) a vertex far from the bodies it is paired with is given: a
-// larger one makes fat boxes in the trees for the other bodies' queries to wade through.
-constexpr double kFarthestRoom = 16.0;
-// Uses a build must serve for the run asked after its step-aside to start again from one. A cloth that
+// Uses a build must serve for the wait after its step-aside to start again from one. A cloth that
 // keeps jolting a third of its vertices out of their balls every few steps (layers jittering
 // against each other) would otherwise pay a full build every other step, each dearer than the
 // fresh search it replaces.
@@ -247,38 +243,6 @@ bool PairCache::wouldHaveAnswered(const std::vector<ContactBody>& bodies, Span s
 long long PairCache::markDirtyVertices(const std::vector<ContactBody>& bodies, Span span, double h, bool everything,
                                        bool probing) {
   const double halfSkin = 0.5 * skin_;
-  // A vertex far from every body it is paired with (never one paired with itself) has room to
-  // wander before any pair of it could come near: its ball grows to half its distance from their
-  // box, less the reach, up to kFarthestRoom half skins. Any radii keep the cache exact (the pairs
-  // kept and let through account for them); these only spare re-anchors, of a skirt hanging clear
-  // of the ball it drapes, or of a hem jittering on the ground.
-  std::vector<Aabb> pairedBox;
-  std::vector<char> pairedWithItself;
-  auto room = [&](std::size_t s, const Vec3& x) {
-    if (pairedBox.empty()) {
-      pairedBox.resize(states_.size());
-      pairedWithItself.assign(states_.size(), 0);
-      std::vector<Aabb> bounds(states_.size());
-      for (std::size_t b = 0; b < states_.size(); ++b) {
-        if (!states_[b].involved) continue;
-        for (const Vec3& p : *bodies[b].x0) bounds[b].grow(p);
-        for (const Vec3& p : *bodies[b].x1) bounds[b].grow(p);
-      }
-      for (const Entry& entry : entries_) {
-        if (entry.a == entry.b) {
-          pairedWithItself[entry.a] = 1;
-          continue;
-        }
-        pairedBox[entry.a].grow(bounds[entry.b]);
-        pairedBox[entry.b].grow(bounds[entry.a]);
-      }
-    }
-    if (pairedWithItself[s]) return halfSkin;
-    const Aabb& box = pairedBox[s];
-    const double distance = (box.lo - x).cwiseMax(x - box.hi).cwiseMax(0.0).norm();
-    const double wide = 0.5 * (distance - largestReach_);
-    return wide > halfSkin ? std::min(wide, kFarthestRoom * halfSkin) : halfSkin;  // (NaN: half a skin)
-  };
   long long total = 0, dirty = 0;
   for (std::size_t s = 0; s < states_.size(); ++s) {
     BodyState& state = states_[s];
@@ -309,12 +273,12 @@ long long PairCache::markDirtyVertices(const std::vector<ContactBody>& bodies, S
         // pairs with it need no room for its drift.
         state.anchor[i] = x0[i];
         state.radius[i] = 0.0;
-      } else if (const double radius = room(s, x0[i]); travel <= 2.0 * radius) {
-        // A radius ahead of the start, so that the start lies on the back of the ball: a vertex
+      } else if (travel <= 2.0 * halfSkin) {
+        // Half a skin ahead of the start, so that the start lies on the back of the ball: a vertex
         // still moving that way stays inside for longest. (On the contact benchmark this re-anchors
         // less often than a ball centred on the path, and both of its cases ran 13-15% faster.)
-        state.anchor[i] = x0[i] + (radius / travel) * (end - x0[i]);
-        state.radius[i] = radius;
+        state.anchor[i] = x0[i] + (halfSkin / travel) * (end - x0[i]);
+        state.radius[i] = halfSkin;
       } else {
         // Faster than the skin: a ball around this path only, searched again next time.
         state.anchor[i] = 0.5 * (x0[i] + end);

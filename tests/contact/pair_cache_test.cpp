@@ -243,42 +243,6 @@ TEST(PairCacheTest, WaitsLongerEachTimeABuildIsAbandonedSoon) {
   EXPECT_GE(cache.stats().served - servedBefore, calmUses - 70);  // the longest wait is 64 uses
 }
 
-// A cloth well clear of the sphere gets balls as wide as its distance allows (up to sixteen half
-// skins), so a steady fall of 3 mm a use, half a skin and more, re-anchors it only every few
-// centimetres; the answers stay exact down to the sphere and through it.
-TEST(PairCacheTest, GivesVerticesFarFromTheObstacleRoomToMove) {
-  Scene scene;
-  for (Vec3& p : scene.clothX1) p.y() += 0.12;
-  PairCache cache(kSkin);
-  cache.add(scene.obstaclePairing, kObstacleReach);
-  std::vector<PrimitivePair> out, fresh;
-  CandidatePairs scratch;
-  auto fall = [&](double by) {
-    scene.clothX0 = scene.clothX1;
-    for (std::size_t i = 0; i < scene.clothX1.size(); ++i) {
-      scene.clothV[i] = Vec3(0.0, -by / kStep, 0.0);
-      scene.clothX1[i] = scene.clothX0[i] + Vec3(0.0, -by, 0.0);
-    }
-    const bool served =
-        cache.findPairs(scene.bodies, scene.obstaclePairing, 0.0, PairCache::Span::WholeStep, kStep, out);
-    findPrimitivePairs(scene.bodies, scene.obstaclePairing, 0.0, scratch, fresh);
-    if (served) EXPECT_EQ(crossings(scene.bodies, out), crossings(scene.bodies, fresh));
-    return served;
-  };
-  ASSERT_TRUE(fall(0.003));  // built
-  const long long reanchoredAtFirst = cache.stats().reanchoredVertices;
-  for (int k = 0; k < 8; ++k) EXPECT_TRUE(fall(0.003)) << "use " << k;
-  // A ball of half a skin would have re-anchored every vertex at every one of these uses.
-  EXPECT_EQ(cache.stats().reanchoredVertices, reanchoredAtFirst);
-  int answered = 0, crossingUses = 0;
-  for (int k = 0; k < 40; ++k) {
-    answered += fall(0.003) ? 1 : 0;
-    crossingUses += crossings(scene.bodies, fresh).empty() ? 0 : 1;
-  }
-  EXPECT_GT(crossingUses, 0) << "the cloth should reach the sphere";
-  EXPECT_GT(answered, 0);
-}
-
 // Stepped aside, the cache follows the motion without searching, and builds again only after a
 // run of uses it could have answered (the run doubling with each build abandoned soon): a cloth
 // jolting every third use lets a run of two through, never one of four, so after the builds
@@ -286,12 +250,12 @@ TEST(PairCacheTest, GivesVerticesFarFromTheObstacleRoomToMove) {
 TEST(PairCacheTest, BuildsAgainOnlyAfterARunOfUsesItCouldHaveAnswered) {
   Scene scene;
   PairCache cache(kSkin);
-  cache.add(scene.clothPairing, kClothReach);  // cloth on cloth: every ball half a skin
+  cache.add(scene.obstaclePairing, kObstacleReach);
   std::mt19937 rng(5);
   std::vector<PrimitivePair> out;
   auto use = [&](double jolt) {
     scene.advance(rng, jolt, 0.0002);
-    return cache.findPairs(scene.bodies, scene.clothPairing, kClothReach, PairCache::Span::WholeStep, kStep, out);
+    return cache.findPairs(scene.bodies, scene.obstaclePairing, kObstacleReach, PairCache::Span::WholeStep, kStep, out);
   };
   for (int k = 0; k < 300; ++k) use(k % 3 == 0 ? 0.03 : 0.0002);
   EXPECT_LE(cache.stats().fullBuilds, 3) << "a build every time a wait ran out would make about ten";
