@@ -11,9 +11,10 @@
 namespace weft {
 namespace {
 
-// The longest wait (in uses) before trying to build again after stepping aside.
+// The longest run of uses it could have answered that the cache asks for, stepped aside, before
+// building again.
 constexpr int kLongestWait = 64;
-// Uses a build must serve for the wait after its step-aside to start again from one. A cloth that
+// Uses a build must serve for the run asked after its step-aside to start again from one. A cloth that
 // keeps jolting a third of its vertices out of their balls every few steps (layers jittering
 // against each other) would otherwise pay a full build every other step, each dearer than the
 // fresh search it replaces.
