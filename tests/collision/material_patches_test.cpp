@@ -11,8 +11,8 @@
 #include "collision/candidate_pairs.h"
 #include "collision/ccd.h"
 #include "collision/closest_points.h"
-#include "mesh/grid.h"
 #include "support/candidate_pair_reference.h"
+#include "support/collision_meshes.h"
 
 #include <Eigen/SVD>
 
@@ -27,12 +27,7 @@ struct ClothGrid {
 };
 
 ClothGrid clothGrid(int n) {
-  GridSpec spec;
-  spec.resolutionX = n;
-  spec.resolutionY = n;
-  spec.width = 1.0;
-  spec.height = 1.0;
-  const ClothMesh cloth = makeGrid(spec);
+  const ClothMesh cloth = test::gridCloth(n, 1.0);
   ClothGrid grid;
   std::vector<std::array<int, 3>> triangles;
   for (const Triangle& t : cloth.tris) {

@@ -18,14 +18,19 @@ struct PositionedMesh {
   CollisionMesh mesh;
 };
 
-// makeGrid's n x n cloth over [0, size]^2 in the plane z = 0.
-inline PositionedMesh gridMesh(int n, double size) {
+// makeGrid's n x n cloth over [0, size]^2.
+inline ClothMesh gridCloth(int n, double size) {
   GridSpec spec;
   spec.resolutionX = n;
   spec.resolutionY = n;
   spec.width = size;
   spec.height = size;
-  const ClothMesh cloth = makeGrid(spec);
+  return makeGrid(spec);
+}
+
+// makeGrid's n x n cloth over [0, size]^2 in the plane z = 0.
+inline PositionedMesh gridMesh(int n, double size) {
+  const ClothMesh cloth = gridCloth(n, size);
   std::vector<std::array<int, 3>> triangles;
   for (const Triangle& t : cloth.tris) triangles.push_back(t.v);
   return {cloth.x, makeCollisionMesh(cloth.vertexCount(), triangles)};

@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "mesh/grid.h"
+#include "support/collision_meshes.h"
 #include "tearing/tear_selection.h"
 
 namespace weft {
@@ -13,14 +14,7 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-ClothMesh grid(int n) {
-  GridSpec spec;
-  spec.resolutionX = n;
-  spec.resolutionY = n;
-  spec.width = 1.0;
-  spec.height = 1.0;
-  return makeGrid(spec);
-}
+ClothMesh grid(int n) { return test::gridCloth(n, 1.0); }
 
 // A uniform pull of `tension` N/m along material direction `angle` in every triangle.
 std::vector<Mat2> uniformPull(const ClothMesh& mesh, double tension, double angle) {
