@@ -90,7 +90,9 @@ class ContactStage {
   // One body per cloth, then one per obstacle; kept between steps for their BVHs.
   std::vector<ContactBody> bodies_;
   std::vector<CollisionMesh> clothTopology_;
-  std::vector<RestCorners> clothRest_;  // each cloth's material-space triangle corners, kept with its topology
+  // Each cloth's material-space triangle corners, copied with its topology: they change only with
+  // it (a tear or cut, reported through clothTopologyChanged) or with a new world.
+  std::vector<RestCorners> clothRest_;
   std::vector<std::vector<double>> clothInverseMass_;
   std::vector<int> bodyToWorldIndex_;
   ContactPairing pairing_;

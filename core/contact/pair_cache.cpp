@@ -14,8 +14,8 @@ namespace {
 // The longest run of uses it could have answered that the cache asks for, stepped aside, before
 // building again.
 constexpr int kLongestWait = 64;
-// Uses a build must serve for the run asked after its step-aside to start again from one. A cloth that
-// keeps jolting a third of its vertices out of their balls every few steps (layers jittering
+// Uses a build must serve for the run asked after its step-aside to start again from one. A cloth
+// that keeps jolting a third of its vertices out of their balls every few steps (layers jittering
 // against each other) would otherwise pay a full build every other step, each dearer than the
 // fresh search it replaces.
 constexpr int kUsesToTrust = 16;
@@ -105,8 +105,8 @@ const PairCache::Entry* PairCache::find(int a, int b) const {
 
 void PairCache::stepAside() {
   built_ = false;
-  // A build that served for a while since starts the waits again from one; one that stepped
-  // aside soon after it was made waits twice as long as the last time.
+  // A build that served for a while starts the runs asked for again from one; one that stepped
+  // aside soon after it was made asks for a run twice as long as the last time.
   if (usesSinceBuild_ >= kUsesToTrust) backOff_ = 1;
   waitUses_ = quietNeeded_ = backOff_;
   backOff_ = std::min(2 * backOff_, kLongestWait);

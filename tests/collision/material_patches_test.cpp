@@ -11,6 +11,8 @@
 #include "collision/candidate_pairs.h"
 #include "collision/ccd.h"
 #include "collision/closest_points.h"
+#include "contact/cloth_collision_mesh.h"
+#include "tearing/tear_mesh.h"
 #include "support/candidate_pair_reference.h"
 #include "support/collision_meshes.h"
 
@@ -154,6 +156,68 @@ TEST(MaterialPatches, ACreasedSheetIsCertifiedUpToTheBoundInItsMeanGradientsPlan
 
 using Pair = std::pair<int, int>;
 std::set<Pair> asSet(const test::PairList& list) { return {list.begin(), list.end()}; }
+
+RestCorners restOf(const ClothMesh& cloth) {
+  RestCorners rest;
+  for (const Triangle& t : cloth.tris) rest.push_back(t.rest);
+  return rest;
+}
+
+// A flat sheet torn again and again, its broad phase patched after each tear as the contact stage
+// does it: the two lips of every tear lie on each other, so a node holding a tear must never be
+// certified again (until a fresh build finds it no longer tiles). Every pair within the margin
+// stays in the search; the rest of the sheet is still certified.
+TEST(MaterialPatches, NodesHoldingATearAreNeverCertifiedAfterThePatch) {
+  std::mt19937 rng(11);
+  ClothMesh cloth = test::gridCloth(13, 1.0);
+  for (int v = 0; v < cloth.vertexCount(); ++v) cloth.mass[v] = 1.0;
+  CollisionMesh mesh = makeClothCollisionMesh(cloth);
+  RestCorners rest = restOf(cloth);
+  std::vector<Vec3> x = cloth.x;
+  const double margin = 0.004;
+  SweptMesh swept = sweptCloth(mesh, x, x, &rest, margin);
+  std::uniform_real_distribution<double> angle(0.0, 2.0 * M_PI);
+  std::normal_distribution<double> noise(0.0, 0.0001);
+  int tears = 0;
+  for (int attempt = 0; attempt < 200 && tears < 40; ++attempt) {
+    const int vertex = std::uniform_int_distribution<int>(0, cloth.vertexCount() - 1)(rng);
+    const double a = angle(rng);
+    TopologyChange change;
+    if (!tearThroughVertex(cloth, vertex, Vec2(std::cos(a), std::sin(a)), TearGuards{}, 0.2, change)) continue;
+    ++tears;
+    patchSweptMesh(swept, updateClothCollisionMesh(mesh, cloth, change));
+    rest = restOf(cloth);
+    x = cloth.x;
+    for (Vec3& p : x) p.z() += noise(rng);
+    updateSweptMesh(swept, margin);
+    CandidatePairs kept;
+    findSelfCandidatePairs(swept, margin, kept);
+    const std::set<Pair> keptVf = asSet(test::toList(kept.vfAB)), keptEe = asSet(test::toList(kept.ee));
+    const test::Motion motion{mesh, x, x};
+    int near = 0;
+    for (const auto& [v, f] : test::bruteForceVertexFace(motion, motion, margin, true)) {
+      const auto& c = mesh.triangles[f];
+      if (!(closestPointOnTriangle(x[v], x[c[0]], x[c[1]], x[c[2]]).distance < margin)) continue;
+      ++near;
+      EXPECT_TRUE(keptVf.count({v, f})) << "tear " << tears << ": vertex " << v << ", face " << f;
+    }
+    for (const auto& [e, g] : test::bruteForceEdgeEdge(motion, motion, margin, true)) {
+      const auto& p = mesh.edges[e];
+      const auto& q = mesh.edges[g];
+      if (!(closestSegmentSegment(x[p[0]], x[p[1]], x[q[0]], x[q[1]]).distance < margin)) continue;
+      ++near;
+      EXPECT_TRUE(keptEe.count({e, g})) << "tear " << tears << ": edges " << e << ", " << g;
+    }
+    EXPECT_GT(near, 0) << "the lips of the tears touch";
+    if (HasFailure()) FAIL() << "after tear " << tears;
+  }
+  EXPECT_GE(tears, 30);
+  std::vector<char> certified;
+  certifyPatches(swept.features.patches, swept.bvh, mesh, x, x, margin, certified);
+  int certifiedNodes = 0;
+  for (char c : certified) certifiedNodes += c;
+  EXPECT_GT(certifiedNodes, 0) << "the sheet away from the tears is still certified";
+}
 
 // A 33 x 33 grid bent into part of a cylinder of radius 0.3 m (a gentle curve), folded over
 // itself along x = 0.5 with the layers 3 mm apart, or squashed to an eighth of its width (its
