@@ -18,8 +18,6 @@ constexpr double kTilingTolerance = 1e-9;
 // costs more than the search it could save, and bends that large rarely certify.
 constexpr int kLargestSharpCheck = 512;
 
-double cross2(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
-
 // Area and perimeter of the convex hull of `points` (Andrew's monotone chain).
 struct Hull {
   double area = 0.0, perimeter = 0.0;

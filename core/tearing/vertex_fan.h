@@ -47,7 +47,4 @@ VertexFan walkFan(const ClothMesh& mesh, int vertex, int startTriangle);
 // border vertex's fan, into the gap of an open fan).
 int fanTriangleHitBy(const ClothMesh& mesh, const VertexFan& fan, const Vec2& direction);
 
-// 2D cross product a.x b.y - a.y b.x: positive when b is counter-clockwise from a.
-inline double cross2(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
-
 }  // namespace weft

@@ -115,7 +115,7 @@ TEST(MaterialPatches, ASlitInsideANodeBreaksItsTilingButNotTheNodesAwayFromIt) {
 // the bound holds for sampled material point pairs.
 TEST(MaterialPatches, ACreasedSheetIsCertifiedUpToTheBoundInItsMeanGradientsPlane) {
   const ClothGrid grid = clothGrid(9);
-  const double angle = M_PI / 3.0, stretch = 0.9;
+  const double angle = kPi / 3.0, stretch = 0.9;
   const Vec3 turned(std::cos(angle), 0.0, std::sin(angle));
   auto place = [&](const Vec2& m) {
     return m.x() >= 0.5 ? Vec3(m.x(), m.y(), 0.0) : Vec3(0.5, m.y(), 0.0) + stretch * (0.5 - m.x()) * -turned;
@@ -176,7 +176,7 @@ TEST(MaterialPatches, NodesHoldingATearAreNeverCertifiedAfterThePatch) {
   std::vector<Vec3> x = cloth.x;
   const double margin = 0.004;
   SweptMesh swept = sweptCloth(mesh, x, x, &rest, margin);
-  std::uniform_real_distribution<double> angle(0.0, 2.0 * M_PI);
+  std::uniform_real_distribution<double> angle(0.0, 2.0 * kPi);
   std::normal_distribution<double> noise(0.0, 0.0001);
   int tears = 0;
   for (int attempt = 0; attempt < 200 && tears < 40; ++attempt) {
