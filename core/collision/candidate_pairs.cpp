@@ -22,20 +22,20 @@ namespace weft {
 
 namespace {
 
-// Box `a` grown by `margin` overlaps box `b` grown by `margin` (as 0 or 1, no branch). Computed
-// as (lo - margin) and (hi + margin), exactly what Aabb::inflate does, so the result is the same
+// Box `a` grown by `growth` overlaps box `b` grown by `growth` (as 0 or 1, no branch). Computed
+// as (lo - growth) and (hi + growth), exactly what Aabb::inflate does, so the result is the same
 // as inflating both boxes and calling Aabb::overlaps.
-int overlapGrownBoth(const Aabb& a, const Aabb& b, double margin) {
-  return ((a.lo.x() - margin) <= (b.hi.x() + margin)) & ((b.lo.x() - margin) <= (a.hi.x() + margin)) &
-         ((a.lo.y() - margin) <= (b.hi.y() + margin)) & ((b.lo.y() - margin) <= (a.hi.y() + margin)) &
-         ((a.lo.z() - margin) <= (b.hi.z() + margin)) & ((b.lo.z() - margin) <= (a.hi.z() + margin));
+int overlapGrownBoth(const Aabb& a, const Aabb& b, double growth) {
+  return ((a.lo.x() - growth) <= (b.hi.x() + growth)) & ((b.lo.x() - growth) <= (a.hi.x() + growth)) &
+         ((a.lo.y() - growth) <= (b.hi.y() + growth)) & ((b.lo.y() - growth) <= (a.hi.y() + growth)) &
+         ((a.lo.z() - growth) <= (b.hi.z() + growth)) & ((b.lo.z() - growth) <= (a.hi.z() + growth));
 }
 
-// Box `a` grown by `margin` overlaps box `b`, which is grown already (a triangle box).
-int overlapGrownFirst(const Aabb& a, const Aabb& b, double margin) {
-  return ((a.lo.x() - margin) <= b.hi.x()) & (b.lo.x() <= (a.hi.x() + margin)) &
-         ((a.lo.y() - margin) <= b.hi.y()) & (b.lo.y() <= (a.hi.y() + margin)) &
-         ((a.lo.z() - margin) <= b.hi.z()) & (b.lo.z() <= (a.hi.z() + margin));
+// Box `a` grown by `growth` overlaps box `b`, which is grown already (a triangle box).
+int overlapGrownFirst(const Aabb& a, const Aabb& b, double growth) {
+  return ((a.lo.x() - growth) <= b.hi.x()) & (b.lo.x() <= (a.hi.x() + growth)) &
+         ((a.lo.y() - growth) <= b.hi.y()) & (b.lo.y() <= (a.hi.y() + growth)) &
+         ((a.lo.z() - growth) <= b.hi.z()) & (b.lo.z() <= (a.hi.z() + growth));
 }
 
 // Evaluated without branches: nine comparisons are cheaper than the mispredictions of
@@ -239,7 +239,7 @@ void addVertexFacePairs(const SweptMesh& vertices, int owner, const SweptMesh& f
   out.reserve(3);
   for (int s = owned.ids.begin[owner]; s < owned.ids.end[owner]; ++s) {
     const int v = owned.ids.items[s];
-    out.add(overlapGrownFirst(owned.boxes[s], faceBox, margin) & (sideOfCorner(corners, ownerSides, v) == 0),
+    out.add(overlapGrownFirst(owned.boxes[s], faceBox, boxGrowth(margin)) & (sideOfCorner(corners, ownerSides, v) == 0),
             {v, face});
   }
 }
@@ -264,14 +264,14 @@ void addEdgeEdgePairs(const SweptMesh& a, int i, const SweptMesh& b, int j, doub
     const int ea = ownedA.ids.items[s];
     const auto& endsA = a.mesh->edges[ea];
     // An edge of i that misses triangle j's box, or stays clear of its plane, misses all of j's edges.
-    if (!overlapGrownFirst(boxA, triangleBoxB, margin) ||
+    if (!overlapGrownFirst(boxA, triangleBoxB, boxGrowth(margin)) ||
         edgeClear(sideOfCorner(cornersA, sides.ofA, endsA[0]), sideOfCorner(cornersA, sides.ofA, endsA[1]))) {
       continue;
     }
     for (int t = beginB; t < endB; ++t) {
       const int eb = ownedB.ids.items[t];
       const auto& endsB = b.mesh->edges[eb];
-      const int keep = overlapGrownBoth(boxA, ownedB.boxes[t], margin) &
+      const int keep = overlapGrownBoth(boxA, ownedB.boxes[t], boxGrowth(margin)) &
                        (edgeClear(sideOfCorner(cornersB, sides.ofB, endsB[0]),
                                   sideOfCorner(cornersB, sides.ofB, endsB[1])) == 0);
       out.add(keep, kOrdered ? EdgeEdgePair{std::min(ea, eb), std::max(ea, eb)} : EdgeEdgePair{ea, eb});
@@ -366,7 +366,7 @@ void updateSweptMesh(SweptMesh& swept, double margin) {
       box.grow(x0[v]);
       box.grow(x1[v]);
     }
-    box.inflate(margin);
+    box.inflate(boxGrowth(margin));
     swept.triangleBoxes[t] = box;
   }
   swept.planes.resize(count);
@@ -579,14 +579,14 @@ void findSelfCandidatePairs(const SweptMesh& a, double margin, CandidatePairs& o
       for (int k = vertexFace.begin[i]; k < vertexFace.end[i]; ++k) {
         const auto [slot, face] = vertexFace.items[k];
         vf.reserve(1);
-        vf.add(overlapGrownFirst(features.vertices.boxes[slot], a.triangleBoxes[face], margin),
+        vf.add(overlapGrownFirst(features.vertices.boxes[slot], a.triangleBoxes[face], boxGrowth(margin)),
                {features.vertices.ids.items[slot], face});
       }
       for (int k = edgeEdge.begin[i]; k < edgeEdge.end[i]; ++k) {
         const auto [slotA, slotB] = edgeEdge.items[k];
         ee.reserve(1);
         const int ea = features.edges.ids.items[slotA], eb = features.edges.ids.items[slotB];
-        ee.add(overlapGrownBoth(features.edges.boxes[slotA], features.edges.boxes[slotB], margin),
+        ee.add(overlapGrownBoth(features.edges.boxes[slotA], features.edges.boxes[slotB], boxGrowth(margin)),
                {std::min(ea, eb), std::max(ea, eb)});
       }
     }

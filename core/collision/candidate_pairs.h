@@ -37,6 +37,13 @@ struct SweptFeatures {
   MaterialPatches patches;
 };
 
+// The broad phase grows every box by half the margin: two boxes so grown overlap exactly when
+// they are within the margin of each other along every axis, as the boxes of any two features
+// within the margin are. (Halving is exact, and rounding lo - g and hi + g is monotonic, so no
+// pair within the margin is lost to rounding. Growing each box by the whole margin, as this
+// search once did, let through pairs up to twice the margin apart.)
+inline double boxGrowth(double margin) { return 0.5 * margin; }
+
 // The plane of a triangle that does not move over the step (a static obstacle's, or any triangle
 // when x0 and x1 are the same positions, as for the start-of-step pairs). A feature lying in that
 // plane cannot come within a distance d of points that stay farther than d on one side of it:
@@ -54,7 +61,7 @@ struct SweptMesh {
   const CollisionMesh* mesh = nullptr;
   const std::vector<Vec3>* x0 = nullptr;
   const std::vector<Vec3>* x1 = nullptr;
-  std::vector<Aabb> triangleBoxes;  // swept over the step, grown by the margin
+  std::vector<Aabb> triangleBoxes;  // swept over the step, grown by boxGrowth(margin)
   std::vector<FixedPlane> planes;   // of each triangle (all zero where it moves over the step)
   bool hasFixedPlanes = false;      // some triangle has a plane
   Bvh bvh;
@@ -64,7 +71,7 @@ struct SweptMesh {
   const RestCorners* rest = nullptr;
 };
 
-// Recomputes the triangle boxes (x0, x1, grown by `margin`), the feature boxes and the fixed
+// Recomputes the triangle boxes (x0, x1, grown by boxGrowth(margin)), the feature boxes and the fixed
 // planes. Builds the BVH
 // and the topology-derived features if the mesh's triangles differ from those they were built for
 // (first use, a change nobody patched with patchSweptMesh, or one after which the patch policy
@@ -93,7 +100,7 @@ struct EdgeEdgePair {
 
 // Between two meshes A and B: vertices of A against faces of B (vfAB), vertices of B against faces
 // of A (vfBA), edges of A against edges of B. A pair is kept when its own features' swept boxes
-// (grown by `margin`) overlap, unless a fixed plane proves it never comes within `margin`: the
+// (grown by boxGrowth(margin)) overlap, unless a fixed plane proves it never comes within `margin`: the
 // plane of a face, or of the triangle owning a vertex or an edge (which lies in it), with the
 // other feature's start and end positions all farther than `margin` on one side. Every pair that
 // comes within `margin` during the step is kept. Sorted, no repeats: the order never depends on

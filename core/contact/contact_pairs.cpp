@@ -29,8 +29,8 @@ void findPrimitivePairs(std::vector<ContactBody>& bodies, const ContactPairing& 
 
 namespace {
 
-// The box a feature's vertices sweep over the step (x0 to x1), grown by `margin`: what the swept
-// triangle boxes of the BVH are for triangles.
+// The box a feature's vertices sweep over the step (x0 to x1), grown by boxGrowth(margin): what
+// the swept triangle boxes of the BVH are for triangles.
 template <std::size_t N>
 Aabb sweptBox(const SweptMesh& m, const std::array<int, N>& ids, double margin) {
   Aabb box;
@@ -38,7 +38,7 @@ Aabb sweptBox(const SweptMesh& m, const std::array<int, N>& ids, double margin) 
     box.grow((*m.x0)[v]);
     box.grow((*m.x1)[v]);
   }
-  box.inflate(margin);
+  box.inflate(boxGrowth(margin));
   return box;
 }
 

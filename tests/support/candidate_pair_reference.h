@@ -27,15 +27,15 @@ inline SweptMesh sweep(const Motion& motion, double margin) {
   return swept;
 }
 
-// The swept box of some vertices over the step, grown by the margin (computed the same way as
-// the implementation documents, so the comparison with it is exact).
+// The swept box of some vertices over the step, grown by half the margin (boxGrowth, computed the
+// same way as the implementation documents, so the comparison with it is exact).
 inline Aabb sweptBox(const Motion& m, std::initializer_list<int> vertices, double margin) {
   Aabb box;
   for (int v : vertices) {
     box.grow(m.x0[v]);
     box.grow(m.x1[v]);
   }
-  box.inflate(margin);
+  box.inflate(boxGrowth(margin));
   return box;
 }
 
