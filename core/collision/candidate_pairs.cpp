@@ -353,28 +353,54 @@ bool isUpToDate(const SweptMesh& swept, int triangleCount) {
 
 }  // namespace
 
+namespace {
+
+// The box of `corners` over the step (x0 to x1).
+template <std::size_t N>
+Aabb sweptBoxOf(const std::array<int, N>& corners, const std::vector<Vec3>& x0, const std::vector<Vec3>& x1) {
+  Aabb box;
+  for (int v : corners) {
+    box.grow(x0[v]);
+    box.grow(x1[v]);
+  }
+  return box;
+}
+
+void updateTriangle(SweptMesh& swept, std::size_t t, double margin) {
+  const auto& corners = swept.mesh->triangles[t];
+  Aabb box = sweptBoxOf(corners, *swept.x0, *swept.x1);
+  box.inflate(boxGrowth(margin));
+  swept.triangleBoxes[t] = box;
+  swept.planes[t] = fixedPlane(corners, *swept.x0, *swept.x1);
+}
+
+void updateVertexSlot(SweptMesh& swept, std::size_t s) {
+  OwnedFeatures& vertices = swept.features.vertices;
+  vertices.boxes[s] = sweptBoxOf(std::array<int, 1>{vertices.ids.items[s]}, *swept.x0, *swept.x1);
+}
+
+void updateEdgeSlot(SweptMesh& swept, std::size_t s) {
+  OwnedFeatures& edges = swept.features.edges;
+  edges.boxes[s] = sweptBoxOf(swept.mesh->edges[edges.ids.items[s]], *swept.x0, *swept.x1);
+}
+
+bool anyFixedPlane(const std::vector<FixedPlane>& planes) {
+  return std::any_of(planes.begin(), planes.end(), [](const FixedPlane& p) { return p.normal != Vec3::Zero(); });
+}
+
+}  // namespace
+
 void updateSweptMesh(SweptMesh& swept, double margin) {
   assert(swept.mesh && swept.x0 && swept.x1);
   const CollisionMesh& mesh = *swept.mesh;
-  const std::vector<Vec3>& x0 = *swept.x0;
-  const std::vector<Vec3>& x1 = *swept.x1;
   const size_t count = mesh.triangles.size();
   swept.triangleBoxes.resize(count);
-  for (size_t t = 0; t < count; ++t) {
-    Aabb box;
-    for (int v : mesh.triangles[t]) {
-      box.grow(x0[v]);
-      box.grow(x1[v]);
-    }
-    box.inflate(boxGrowth(margin));
-    swept.triangleBoxes[t] = box;
-  }
   swept.planes.resize(count);
-  swept.hasFixedPlanes = false;
-  for (size_t t = 0; t < count; ++t) {
-    swept.planes[t] = fixedPlane(mesh.triangles[t], x0, x1);
-    swept.hasFixedPlanes = swept.hasFixedPlanes || swept.planes[t].normal != Vec3::Zero();
-  }
+  for (size_t t = 0; t < count; ++t) updateTriangle(swept, t, margin);
+  swept.hasFixedPlanes = anyFixedPlane(swept.planes);
+  swept.boxesMargin = margin;
+  swept.boxesX0 = swept.x0;
+  swept.boxesX1 = swept.x1;
 
   // Any topology change, including one that keeps the triangle count, invalidates the ownership
   // groups and neighbour lists (and the tree's shape, which was chosen for the old triangles'
@@ -397,21 +423,34 @@ void updateSweptMesh(SweptMesh& swept, double margin) {
   }
 
   // Every slot, stale ones included (they hold valid ids): one plain loop, no run bookkeeping.
-  for (size_t s = 0; s < features.vertices.ids.items.size(); ++s) {
-    const int v = features.vertices.ids.items[s];
-    Aabb box;
-    box.grow(x0[v]);
-    box.grow(x1[v]);
-    features.vertices.boxes[s] = box;
+  for (size_t s = 0; s < features.vertices.ids.items.size(); ++s) updateVertexSlot(swept, s);
+  for (size_t s = 0; s < features.edges.ids.items.size(); ++s) updateEdgeSlot(swept, s);
+}
+
+void updateSweptMeshAround(SweptMesh& swept, double margin, const std::vector<char>& moved) {
+  const CollisionMesh& mesh = *swept.mesh;
+  if (!(swept.boxesMargin == margin) || swept.boxesX0 != swept.x0 || swept.boxesX1 != swept.x1 ||
+      !isUpToDate(swept) || moved.size() != static_cast<std::size_t>(mesh.vertexCount)) {
+    updateSweptMesh(swept, margin);
+    return;
   }
-  for (size_t s = 0; s < features.edges.ids.items.size(); ++s) {
-    Aabb box;
-    for (int v : mesh.edges[features.edges.ids.items[s]]) {
-      box.grow(x0[v]);
-      box.grow(x1[v]);
+  // Every vertex is owned by a triangle around it, and every edge by a triangle holding it, so the
+  // owned runs of the triangles around the moved vertices hold every feature that moved. (Stale
+  // slots, which no run reads, are left as they were.)
+  const SweptFeatures& features = swept.features;
+  bool anyMoved = false;
+  for (int v = 0; v < mesh.vertexCount; ++v) {
+    if (!moved[v]) continue;
+    anyMoved = true;
+    for (int t : mesh.trianglesAround[v]) {
+      updateTriangle(swept, static_cast<std::size_t>(t), margin);
+      for (int s = features.vertices.ids.begin[t]; s < features.vertices.ids.end[t]; ++s) updateVertexSlot(swept, s);
+      for (int s = features.edges.ids.begin[t]; s < features.edges.ids.end[t]; ++s) updateEdgeSlot(swept, s);
     }
-    features.edges.boxes[s] = box;
   }
+  if (!anyMoved) return;
+  swept.hasFixedPlanes = anyFixedPlane(swept.planes);
+  swept.bvh.refit(swept.triangleBoxes);
 }
 
 void patchSweptMesh(SweptMesh& swept, const CollisionMeshChange& change) {

@@ -69,6 +69,11 @@ struct SweptMesh {
   // A cloth's material-space triangle corners (null for an obstacle): its BVH is then split along
   // material-space cuts, and self-collision searches skip certified nodes (material_patches.h).
   const RestCorners* rest = nullptr;
+  // What the boxes and planes were last computed from (updateSweptMesh): updateSweptMeshAround
+  // patches them only for the same margin and position arrays.
+  double boxesMargin = -1.0;
+  const std::vector<Vec3>* boxesX0 = nullptr;
+  const std::vector<Vec3>* boxesX1 = nullptr;
 };
 
 // Recomputes the triangle boxes (x0, x1, grown by boxGrowth(margin)), the feature boxes and the fixed
@@ -77,6 +82,14 @@ struct SweptMesh {
 // (first use, a change nobody patched with patchSweptMesh, or one after which the patch policy
 // asked for a fresh build; about 2 ms for an 8k-triangle mesh), and refits the BVH otherwise.
 void updateSweptMesh(SweptMesh& swept, double margin);
+
+// What updateSweptMesh(swept, margin) would compute, when only the vertices flagged in `moved`
+// have moved since the last updateSweptMesh with this margin (as between two iterations of pass
+// 2, where only the vertices an impulse moved are flagged): the boxes and planes around them are
+// recomputed and the BVH refitted, at a cost in proportion to the flagged vertices plus the refit.
+// The caller vouches that nothing else moved; a last update for another margin, other position
+// arrays or another topology makes it a full updateSweptMesh.
+void updateSweptMeshAround(SweptMesh& swept, double margin, const std::vector<char>& moved);
 
 // After editCollisionMesh changed swept.mesh: patches what updateSweptMesh built from the topology
 // for the triangles the edit touched, so that the next updateSweptMesh only refits.

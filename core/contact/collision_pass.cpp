@@ -165,23 +165,30 @@ bool runCollisionPass(std::vector<ContactBody>& bodies, const std::vector<Pairin
   // and every impulse are the same).
   VertexFlags flagged(bodies.size());
   for (std::size_t b = 0; b < bodies.size(); ++b) flagged[b].assign(bodies[b].x0->size(), 0);
+  // Per part: its bodies' swept boxes were refreshed by its own search in the last iteration (not
+  // served by a cache), so the next search needs to refresh only those around flagged vertices.
+  std::vector<char> searchedLast(parts.size(), 0);
   for (int iteration = 0; iteration < settings.ccdIterations; ++iteration) {
     ++counts.ccdIterations;
     const VertexFlags* onlyTouching = iteration == 0 || settings.recheckAllPairs ? nullptr : &flagged;
     long long collisions = settings.ground != nullptr ? stopAtGround(bodies, settings, &flagged) : 0;
     counts.groundContacts += collisions;
     pairs.clear();
-    for (const PairingPart& part : parts) {
+    for (std::size_t k = 0; k < parts.size(); ++k) {
+      const PairingPart& part = parts[k];
       if (part.pairing->empty()) continue;
       const ContactPairing& pairing = *part.pairing;
-      if (!part.cache ||
-          !part.cache->findPairs(bodies, pairing, 0.0, PairCache::Span::WholeStep, settings.h, partPairs, onlyTouching)) {
+      const bool served =
+          part.cache &&
+          part.cache->findPairs(bodies, pairing, 0.0, PairCache::Span::WholeStep, settings.h, partPairs, onlyTouching);
+      if (!served) {
         if (onlyTouching) {
-          findPrimitivePairsTouching(bodies, pairing, 0.0, flagged, partPairs);
+          findPrimitivePairsTouching(bodies, pairing, 0.0, flagged, partPairs, searchedLast[k] != 0);
         } else {
           findPrimitivePairs(bodies, pairing, 0.0, scratch, partPairs);
         }
       }
+      searchedLast[k] = served ? 0 : 1;
       pairs.insert(pairs.end(), partPairs.begin(), partPairs.end());
     }
     for (std::vector<char>& flags : flagged) std::fill(flags.begin(), flags.end(), char{0});

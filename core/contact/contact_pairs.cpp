@@ -121,7 +121,7 @@ void touchingEdgeEdge(const SweptMesh& a, const FlaggedFeatures& fa, const Swept
 }  // namespace
 
 void findPrimitivePairsTouching(std::vector<ContactBody>& bodies, const ContactPairing& pairing, double margin,
-                                const VertexFlags& flags, std::vector<PrimitivePair>& out) {
+                                const VertexFlags& flags, std::vector<PrimitivePair>& out, bool onlyFlaggedMoved) {
   out.clear();
   std::vector<char> involved(bodies.size(), 0);
   for (const auto& [a, b] : pairing.between) involved[a] = involved[b] = 1;
@@ -129,7 +129,11 @@ void findPrimitivePairsTouching(std::vector<ContactBody>& bodies, const ContactP
   std::vector<FlaggedFeatures> flagged(bodies.size());
   for (std::size_t i = 0; i < bodies.size(); ++i) {
     if (!involved[i]) continue;
-    updateSweptMesh(bodies[i].swept, margin);
+    if (onlyFlaggedMoved) {
+      updateSweptMeshAround(bodies[i].swept, margin, flags[i]);
+    } else {
+      updateSweptMesh(bodies[i].swept, margin);
+    }
     flagged[i] = flaggedFeatures(*bodies[i].topology, flags[i]);
   }
   std::vector<std::array<int, 2>> found;

@@ -34,9 +34,12 @@ void findPrimitivePairs(std::vector<ContactBody>& bodies, const ContactPairing& 
 
 // The pairs findPrimitivePairs would list (or more: boxes only, no plane culling) that have a
 // flagged vertex, in its order, found from the flagged vertices' features alone: what pass 2's
-// later iterations need when few vertices moved. Refreshes the involved bodies' swept boxes.
+// later iterations need when few vertices moved. Refreshes the involved bodies' swept boxes: all
+// of them, or, with `onlyFlaggedMoved` (the boxes were last refreshed by a search with this
+// margin, and only flagged vertices have moved since), those around the flagged vertices.
 void findPrimitivePairsTouching(std::vector<ContactBody>& bodies, const ContactPairing& pairing, double margin,
-                                const VertexFlags& flags, std::vector<PrimitivePair>& out);
+                                const VertexFlags& flags, std::vector<PrimitivePair>& out,
+                                bool onlyFlaggedMoved = false);
 
 // The Coulomb coefficient of a pair: the obstacle's against cloth, or cloth on cloth.
 double pairFriction(const std::vector<ContactBody>& bodies, const PrimitivePair& pair);

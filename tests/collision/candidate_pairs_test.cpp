@@ -110,6 +110,53 @@ TEST(CandidatePairs, BoxesLetThroughPairsWithinTheMarginAndNotThoseTwiceAsFar) {
   }
 }
 
+TEST(CandidatePairs, UpdatingAroundMovedVerticesEqualsAFullUpdate) {
+  // A folded cloth whose lower half holds still over the step (its triangles have fixed planes).
+  // Then a few vertices move, as impulses move them between two iterations of pass 2: refreshing
+  // around them must leave every box, plane and pair as a full refresh does.
+  std::mt19937 rng(31);
+  Motion cloth = foldedCloth(rng, 16);
+  for (size_t v = 0; v < cloth.x0.size(); ++v) {
+    if (cloth.x0[v].y() < 0.5) cloth.x1[v] = cloth.x0[v];
+  }
+  const double margin = 0.004;
+  SweptMesh around = sweep(cloth, margin);
+  ASSERT_TRUE(around.hasFixedPlanes);
+  std::vector<char> moved(cloth.x0.size(), 0);
+  std::uniform_int_distribution<int> pick(0, static_cast<int>(cloth.x0.size()) - 1);
+  std::normal_distribution<double> kick(0.0, 0.01);
+  for (int round = 0; round < 3; ++round) {
+    std::fill(moved.begin(), moved.end(), char{0});
+    for (int k = 0; k < 12; ++k) {
+      const int v = pick(rng);
+      moved[v] = 1;
+      cloth.x1[v] += Vec3(kick(rng), kick(rng), kick(rng));
+    }
+    updateSweptMeshAround(around, margin, moved);
+    const SweptMesh full = sweep(cloth, margin);
+    for (size_t t = 0; t < cloth.mesh.triangles.size(); ++t) {
+      EXPECT_EQ(around.triangleBoxes[t].lo, full.triangleBoxes[t].lo) << "triangle " << t;
+      EXPECT_EQ(around.triangleBoxes[t].hi, full.triangleBoxes[t].hi) << "triangle " << t;
+      EXPECT_EQ(around.planes[t].normal, full.planes[t].normal) << "triangle " << t;
+    }
+    EXPECT_EQ(around.hasFixedPlanes, full.hasFixedPlanes);
+    EXPECT_EQ(around.bvh.bounds().lo, full.bvh.bounds().lo);
+    EXPECT_EQ(around.bvh.bounds().hi, full.bvh.bounds().hi);
+    CandidatePairs fromAround, fromFull;
+    findSelfCandidatePairs(around, margin, fromAround);
+    findSelfCandidatePairs(full, margin, fromFull);
+    EXPECT_EQ(toList(fromAround.vfAB), toList(fromFull.vfAB)) << "round " << round;
+    EXPECT_EQ(toList(fromAround.ee), toList(fromFull.ee)) << "round " << round;
+    EXPECT_GT(fromFull.size(), 100u) << "the layers should be in contact";
+  }
+  // Boxes last refreshed for another margin: a full refresh whatever the flags say.
+  std::fill(moved.begin(), moved.end(), char{0});
+  updateSweptMeshAround(around, 2.0 * margin, moved);
+  const SweptMesh wider = sweep(cloth, 2.0 * margin);
+  EXPECT_EQ(around.bvh.bounds().lo, wider.bvh.bounds().lo);
+  EXPECT_EQ(around.triangleBoxes.front().lo, wider.triangleBoxes.front().lo);
+}
+
 TEST(CandidatePairs, SelfPairsEqualTheBruteForceEnumerationWithoutAdjacentFeatures) {
   std::mt19937 rng(22);
   for (int trial = 0; trial < 4; ++trial) {
