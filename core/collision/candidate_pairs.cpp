@@ -429,8 +429,10 @@ void updateSweptMesh(SweptMesh& swept, double margin) {
 
 void updateSweptMeshAround(SweptMesh& swept, double margin, const std::vector<char>& moved) {
   const CollisionMesh& mesh = *swept.mesh;
+  // (The topology is checked by its counts only: the caller vouches that it did not change either.)
   if (!(swept.boxesMargin == margin) || swept.boxesX0 != swept.x0 || swept.boxesX1 != swept.x1 ||
-      !isUpToDate(swept) || moved.size() != static_cast<std::size_t>(mesh.vertexCount)) {
+      !isUpToDate(swept, static_cast<int>(mesh.triangles.size())) ||
+      moved.size() != static_cast<std::size_t>(mesh.vertexCount)) {
     updateSweptMesh(swept, margin);
     return;
   }

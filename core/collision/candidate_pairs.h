@@ -87,8 +87,8 @@ void updateSweptMesh(SweptMesh& swept, double margin);
 // have moved since the last updateSweptMesh with this margin (as between two iterations of pass
 // 2, where only the vertices an impulse moved are flagged): the boxes and planes around them are
 // recomputed and the BVH refitted, at a cost in proportion to the flagged vertices plus the refit.
-// The caller vouches that nothing else moved; a last update for another margin, other position
-// arrays or another topology makes it a full updateSweptMesh.
+// The caller vouches that nothing else moved and that the topology is the same; a last update for
+// another margin, other position arrays or other triangle counts makes it a full updateSweptMesh.
 void updateSweptMeshAround(SweptMesh& swept, double margin, const std::vector<char>& moved);
 
 // After editCollisionMesh changed swept.mesh: patches what updateSweptMesh built from the topology

@@ -29,93 +29,106 @@ void findPrimitivePairs(std::vector<ContactBody>& bodies, const ContactPairing& 
 
 namespace {
 
-// The box a feature's vertices sweep over the step (x0 to x1), grown by boxGrowth(margin): what
-// the swept triangle boxes of the BVH are for triangles.
+// The box a feature's vertices sweep over the step (x0 to x1), not grown.
 template <std::size_t N>
-Aabb sweptBox(const SweptMesh& m, const std::array<int, N>& ids, double margin) {
+Aabb sweptBox(const SweptMesh& m, const std::array<int, N>& ids) {
   Aabb box;
   for (int v : ids) {
     box.grow((*m.x0)[v]);
     box.grow((*m.x1)[v]);
   }
-  box.inflate(boxGrowth(margin));
   return box;
 }
 
-// The features of a mesh with a flagged vertex, each once, ascending.
-struct FlaggedFeatures {
-  std::vector<int> vertices, edges, faces;
+bool grownOverlap(const Aabb& a, double growA, const Aabb& b, double growB) {
+  return a.lo.x() - growA <= b.hi.x() + growB && b.lo.x() - growB <= a.hi.x() + growA &&
+         a.lo.y() - growA <= b.hi.y() + growB && b.lo.y() - growB <= a.hi.y() + growA &&
+         a.lo.z() - growA <= b.hi.z() + growB && b.lo.z() - growB <= a.hi.z() + growA;
+}
+
+// The pairs of one body pair (A, B), or of a body with itself (then all vertex-face pairs are in
+// vfAB and each edge pair is (smaller, larger)), as (feature of the first, feature of the second).
+struct TouchingLists {
+  std::vector<std::array<int, 2>> vfAB, vfBA, ee;
+  void clear() {
+    vfAB.clear();
+    vfBA.clear();
+    ee.clear();
+  }
 };
 
-FlaggedFeatures flaggedFeatures(const CollisionMesh& mesh, const std::vector<char>& flags) {
-  FlaggedFeatures f;
-  for (int v = 0; v < mesh.vertexCount; ++v) {
-    if (!flags[v]) continue;
-    f.vertices.push_back(v);
-    for (int t : mesh.trianglesAround[v]) {
-      f.faces.push_back(t);
-      for (int e : mesh.triangleEdges[t]) {
-        if (mesh.edges[e][0] == v || mesh.edges[e][1] == v) f.edges.push_back(e);
+// Every pair made of a feature around vertex u of `from` (u itself, a triangle holding it, an edge
+// ending at it) and a feature of `into` whose grown swept boxes overlap, with one query of
+// `into`'s tree: each such pair's other feature lies in a triangle whose (grown) box overlaps the
+// box of u's triangles. `fromIsA` says on which side of the lists `from` is; `self` that from and
+// into are one mesh (then features touching by topology are left out). Each box is computed once:
+// u's edges' before the query, each reported triangle's corners' and edges' once per triangle.
+void touchingAround(const SweptMesh& from, int u, const SweptMesh& into, double growth, bool fromIsA, bool self,
+                    std::vector<int>& edgesAround, std::vector<Aabb>& edgeBoxes, std::vector<int>& triangles,
+                    TouchingLists& out) {
+  const CollisionMesh& fromMesh = *from.mesh;
+  const CollisionMesh& intoMesh = *into.mesh;
+  const std::vector<int>& facesAround = fromMesh.trianglesAround[u];
+  if (facesAround.empty()) return;  // in no triangle: no feature a search lists
+  Aabb star;
+  edgesAround.clear();
+  for (int f : facesAround) {
+    star.grow(from.triangleBoxes[f]);
+    for (int e : fromMesh.triangleEdges[f]) {
+      if (fromMesh.edges[e][0] == u || fromMesh.edges[e][1] == u) edgesAround.push_back(e);
+    }
+  }
+  std::sort(edgesAround.begin(), edgesAround.end());
+  edgesAround.erase(std::unique(edgesAround.begin(), edgesAround.end()), edgesAround.end());
+  edgeBoxes.clear();
+  for (int e : edgesAround) edgeBoxes.push_back(sweptBox(from, fromMesh.edges[e]));
+  triangles.clear();
+  into.bvh.overlapping(star, [&](int t) { triangles.push_back(t); });
+
+  // Where each kind of pair goes: (vertex of from, face of into), (vertex of into, face of from).
+  std::vector<std::array<int, 2>>& fromVertexIntoFace = self ? out.vfAB : (fromIsA ? out.vfAB : out.vfBA);
+  std::vector<std::array<int, 2>>& intoVertexFromFace = self ? out.vfAB : (fromIsA ? out.vfBA : out.vfAB);
+  const Aabb uBox = sweptBox(from, std::array<int, 1>{u});
+  std::array<Aabb, 3> cornerBoxes, sideBoxes;
+  for (int t : triangles) {
+    const Aabb& faceBox = into.triangleBoxes[t];  // grown already
+    const auto& corners = intoMesh.triangles[t];
+    const auto& sides = intoMesh.triangleEdges[t];
+    for (int k = 0; k < 3; ++k) {
+      cornerBoxes[k] = sweptBox(into, std::array<int, 1>{corners[k]});
+      sideBoxes[k] = sweptBox(into, intoMesh.edges[sides[k]]);
+    }
+    if (!(self && isCorner(corners, u)) && grownOverlap(uBox, growth, faceBox, 0.0)) {
+      fromVertexIntoFace.push_back({u, t});
+    }
+    for (int f : facesAround) {
+      const Aabb& ownFace = from.triangleBoxes[f];
+      if (!grownOverlap(ownFace, 0.0, faceBox, 0.0)) continue;
+      for (int k = 0; k < 3; ++k) {
+        if (self && isCorner(fromMesh.triangles[f], corners[k])) continue;
+        if (grownOverlap(cornerBoxes[k], growth, ownFace, 0.0)) intoVertexFromFace.push_back({corners[k], f});
+      }
+    }
+    for (std::size_t i = 0; i < edgesAround.size(); ++i) {
+      const int e = edgesAround[i];
+      if (!grownOverlap(edgeBoxes[i], growth, faceBox, 0.0)) continue;
+      for (int k = 0; k < 3; ++k) {
+        const int other = sides[k];
+        if (self && (other == e || shareVertex(fromMesh.edges[e], intoMesh.edges[other]))) continue;
+        if (!grownOverlap(edgeBoxes[i], growth, sideBoxes[k], growth)) continue;
+        if (self) {
+          out.ee.push_back({std::min(e, other), std::max(e, other)});
+        } else {
+          out.ee.push_back(fromIsA ? std::array<int, 2>{e, other} : std::array<int, 2>{other, e});
+        }
       }
     }
   }
-  for (std::vector<int>* ids : {&f.edges, &f.faces}) {
-    std::sort(ids->begin(), ids->end());
-    ids->erase(std::unique(ids->begin(), ids->end()), ids->end());
-  }
-  return f;
 }
 
 void sortUnique(std::vector<std::array<int, 2>>& pairs) {
   std::sort(pairs.begin(), pairs.end());
   pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
-}
-
-// Vertices of A against faces of B with a flagged vertex on either side: each flagged vertex of A
-// against B's tree, and each flagged face of B against A's tree (then its triangles' corners).
-// `admit` says which (vertex, face) pairs may be listed at all (self: not the face's own corners).
-template <class Admit>
-void touchingVertexFace(const SweptMesh& a, const FlaggedFeatures& fa, const SweptMesh& b, const FlaggedFeatures& fb,
-                        double margin, Admit admit, std::vector<std::array<int, 2>>& out) {
-  out.clear();
-  for (int v : fa.vertices) {
-    b.bvh.overlapping(sweptBox(a, std::array<int, 1>{v}, margin), [&](int f) {
-      if (admit(v, f)) out.push_back({v, f});
-    });
-  }
-  for (int f : fb.faces) {
-    const Aabb& faceBox = b.triangleBoxes[f];
-    a.bvh.overlapping(faceBox, [&](int t) {
-      for (int v : a.mesh->triangles[t]) {
-        if (admit(v, f) && Bvh::overlapsBox(sweptBox(a, std::array<int, 1>{v}, margin), faceBox)) out.push_back({v, f});
-      }
-    });
-  }
-  sortUnique(out);
-}
-
-// Edges of A against edges of B with a flagged vertex on either side, as (edge of A, edge of B).
-// `admit` says which pairs may be listed at all (self: not an edge with itself or a neighbour).
-template <class Admit>
-void touchingEdgeEdge(const SweptMesh& a, const FlaggedFeatures& fa, const SweptMesh& b, const FlaggedFeatures& fb,
-                      double margin, Admit admit, std::vector<std::array<int, 2>>& out) {
-  out.clear();
-  auto search = [&](const SweptMesh& from, const std::vector<int>& edges, const SweptMesh& into, bool fromIsA) {
-    for (int e : edges) {
-      const Aabb box = sweptBox(from, from.mesh->edges[e], margin);
-      into.bvh.overlapping(box, [&](int t) {
-        for (int other : into.mesh->triangleEdges[t]) {
-          const int edgeA = fromIsA ? e : other, edgeB = fromIsA ? other : e;
-          if (admit(edgeA, edgeB) && Bvh::overlapsBox(box, sweptBox(into, into.mesh->edges[other], margin))) {
-            out.push_back({edgeA, edgeB});
-          }
-        }
-      });
-    }
-  };
-  search(a, fa.edges, b, true);
-  if (&a != &b) search(b, fb.edges, a, false);
-  sortUnique(out);
 }
 
 }  // namespace
@@ -126,7 +139,6 @@ void findPrimitivePairsTouching(std::vector<ContactBody>& bodies, const ContactP
   std::vector<char> involved(bodies.size(), 0);
   for (const auto& [a, b] : pairing.between) involved[a] = involved[b] = 1;
   for (int a : pairing.self) involved[a] = 1;
-  std::vector<FlaggedFeatures> flagged(bodies.size());
   for (std::size_t i = 0; i < bodies.size(); ++i) {
     if (!involved[i]) continue;
     if (onlyFlaggedMoved) {
@@ -134,36 +146,37 @@ void findPrimitivePairsTouching(std::vector<ContactBody>& bodies, const ContactP
     } else {
       updateSweptMesh(bodies[i].swept, margin);
     }
-    flagged[i] = flaggedFeatures(*bodies[i].topology, flags[i]);
   }
-  std::vector<std::array<int, 2>> found;
-  auto emit = [&](PairKind kind, int bodyA, int bodyB) {
+  const double growth = boxGrowth(margin);
+  std::vector<int> edgesAround, triangles;
+  std::vector<Aabb> edgeBoxes;
+  TouchingLists lists;
+  auto searchFrom = [&](int from, int into, bool fromIsA, bool self) {
+    const std::vector<char>& flagged = flags[from];
+    for (int u = 0; u < static_cast<int>(flagged.size()); ++u) {
+      if (flagged[u]) {
+        touchingAround(bodies[from].swept, u, bodies[into].swept, growth, fromIsA, self, edgesAround, edgeBoxes,
+                       triangles, lists);
+      }
+    }
+  };
+  auto emit = [&](std::vector<std::array<int, 2>>& found, PairKind kind, int bodyA, int bodyB) {
+    sortUnique(found);
     for (const auto& [p, q] : found) out.push_back({kind, bodyA, p, bodyB, q});
   };
-  const auto anyPair = [](int, int) { return true; };
   for (const auto& [a, b] : pairing.between) {
-    const SweptMesh &A = bodies[a].swept, &B = bodies[b].swept;
-    touchingVertexFace(A, flagged[a], B, flagged[b], margin, anyPair, found);
-    emit(PairKind::VertexFace, a, b);
-    touchingVertexFace(B, flagged[b], A, flagged[a], margin, anyPair, found);
-    emit(PairKind::VertexFace, b, a);
-    touchingEdgeEdge(A, flagged[a], B, flagged[b], margin, anyPair, found);
-    emit(PairKind::EdgeEdge, a, b);
+    lists.clear();
+    searchFrom(a, b, true, false);
+    searchFrom(b, a, false, false);
+    emit(lists.vfAB, PairKind::VertexFace, a, b);
+    emit(lists.vfBA, PairKind::VertexFace, b, a);
+    emit(lists.ee, PairKind::EdgeEdge, a, b);
   }
   for (int a : pairing.self) {
-    const SweptMesh& A = bodies[a].swept;
-    const CollisionMesh& mesh = *A.mesh;
-    touchingVertexFace(A, flagged[a], A, flagged[a], margin,
-                       [&](int v, int f) { return !isCorner(mesh.triangles[f], v); }, found);
-    emit(PairKind::VertexFace, a, a);
-    // Each unordered pair once, as (smaller, larger), as findSelfCandidatePairs lists them.
-    touchingEdgeEdge(A, flagged[a], A, flagged[a], margin,
-                     [&](int e, int f) { return e != f && !shareVertex(mesh.edges[e], mesh.edges[f]); }, found);
-    for (auto& pair : found) {
-      if (pair[0] > pair[1]) std::swap(pair[0], pair[1]);
-    }
-    sortUnique(found);
-    emit(PairKind::EdgeEdge, a, a);
+    lists.clear();
+    searchFrom(a, a, true, true);
+    emit(lists.vfAB, PairKind::VertexFace, a, a);
+    emit(lists.ee, PairKind::EdgeEdge, a, a);
   }
 }
 
