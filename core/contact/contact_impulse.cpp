@@ -4,22 +4,21 @@
 
 namespace weft {
 
-ImpulseResult applyContactImpulse(std::vector<ContactBody>& bodies, const ContactSide& a, const ContactSide& b,
-                                  const Vec3& n, double targetNormalVelocity, double mu, double h) {
-  ImpulseResult result;
+PairImpulse contactImpulse(const std::vector<ContactBody>& bodies, const ContactSide& a, const ContactSide& b,
+                           const Vec3& n, double targetNormalVelocity, double mu, double h) {
+  PairImpulse out;
+  ImpulseResult& result = out.result;
   const Vec3 relative = sideVelocity(bodies, a, h) - sideVelocity(bodies, b, h);
   const double normalVelocity = n.dot(relative);
   result.normalVelocityBefore = normalVelocity;
-  if (!(normalVelocity < targetNormalVelocity)) return result;
+  if (!(normalVelocity < targetNormalVelocity)) return out;
   const double inverseMass = sideInverseMass(bodies, a, n) + sideInverseMass(bodies, b, n);
   result.inverseMass = inverseMass;
-  if (!(inverseMass > 0.0)) return result;
+  if (!(inverseMass > 0.0)) return out;
 
   // Normal: the impulse that changes the relative normal velocity by exactly the shortfall.
   const double normalChange = targetNormalVelocity - normalVelocity;
-  const Vec3 normalImpulse = (normalChange / inverseMass) * n;
-  applySideImpulse(bodies, a, normalImpulse, h);
-  applySideImpulse(bodies, b, -normalImpulse, h);
+  out.normal = (normalChange / inverseMass) * n;
   result.applied = true;
 
   // Friction (Bridson 2002, §7.2): v_T <- max(1 - mu dv_N / |v_T|, 0) v_T, so sliding slows by at
@@ -31,12 +30,23 @@ ImpulseResult applyContactImpulse(std::vector<ContactBody>& bodies, const Contac
     const double tangentInverseMass = sideInverseMass(bodies, a, direction) + sideInverseMass(bodies, b, direction);
     if (tangentInverseMass > 0.0) {
       const double slowDown = std::min(mu * normalChange, speed);
-      const Vec3 frictionImpulse = (-slowDown / tangentInverseMass) * direction;
-      applySideImpulse(bodies, a, frictionImpulse, h);
-      applySideImpulse(bodies, b, -frictionImpulse, h);
+      out.friction = (-slowDown / tangentInverseMass) * direction;
     }
   }
-  return result;
+  return out;
+}
+
+ImpulseResult applyContactImpulse(std::vector<ContactBody>& bodies, const ContactSide& a, const ContactSide& b,
+                                  const Vec3& n, double targetNormalVelocity, double mu, double h) {
+  const PairImpulse impulse = contactImpulse(bodies, a, b, n, targetNormalVelocity, mu, h);
+  if (!impulse.result.applied) return impulse.result;
+  applySideImpulse(bodies, a, impulse.normal, h);
+  applySideImpulse(bodies, b, -impulse.normal, h);
+  if (impulse.friction != Vec3::Zero()) {
+    applySideImpulse(bodies, a, impulse.friction, h);
+    applySideImpulse(bodies, b, -impulse.friction, h);
+  }
+  return impulse.result;
 }
 
 void applyGroundImpulse(Vec3& v, double targetNormalVelocity, double mu) {

@@ -14,6 +14,16 @@ struct ImpulseResult {
   double inverseMass = 0.0;           // effective inverse mass of the pair along the normal (1/kg)
 };
 
+// The impulses applyContactImpulse applies to side a (side b takes their opposites), computed
+// from the bodies' current velocities without applying them.
+struct PairImpulse {
+  ImpulseResult result;
+  Vec3 normal = Vec3::Zero();    // N s, along n
+  Vec3 friction = Vec3::Zero();  // N s, against the relative tangential velocity
+};
+PairImpulse contactImpulse(const std::vector<ContactBody>& bodies, const ContactSide& a, const ContactSide& b,
+                           const Vec3& n, double targetNormalVelocity, double mu, double h);
+
 // Side a against side b, n the unit normal pointing from b towards a. When the relative normal
 // velocity n.(v_a - v_b) is below targetNormalVelocity, applies equal and opposite impulses that
 // bring it to the target (inelastic: no bounce beyond it), then friction with coefficient mu.

@@ -2,6 +2,7 @@
 // closer than the cloth thickness.
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include <Eigen/Geometry>
 
@@ -41,22 +42,87 @@ void groundProximity(std::vector<ContactBody>& bodies, const ContactStepSettings
   }
 }
 
+bool isClothPair(const std::vector<ContactBody>& bodies, const PrimitivePair& pair) {
+  return bodies[pair.bodyA].isCloth() && bodies[pair.bodyB].isCloth();
+}
+
+// The repulsion of one near pair: its normal (a touching pair's turned against the approach) and
+// the normal velocity that restores a tenth of the overlap.
+struct Repulsion {
+  Vec3 normal;
+  double target;
+};
+
+Repulsion repulsion(const std::vector<ContactBody>& bodies, const NearPair& near, const ContactStepSettings& settings) {
+  Vec3 normal = near.normal;
+  if (near.touching) {
+    normal = orientAgainstApproach(normal, sideVelocity(bodies, near.a, settings.h) - sideVelocity(bodies, near.b, settings.h));
+  }
+  return {normal, kRepulsionFraction * (settings.thickness - near.distance) / settings.h};
+}
+
+// Cloth against cloth. Applied one after another in a fixed order, the impulses of the many
+// overlapping pairs of a compressed drape each start from what the earlier ones left, and their
+// errors add up in one direction: a 64 x 64 sheet draped on a ball, at rest without
+// self-collision, crept off the ball within 15 s with it. So every pair's impulse is computed
+// from the velocities this pass starts from (a Jacobi iteration) and then scaled by how shared its
+// vertices are: by 2 / (n_a + n_b), n_a the number of pairs pushing side a's vertices, averaged
+// with side a's weights. A vertex pushed by many pairs so takes about their mean rather than their
+// sum; the result does not depend on the pairs' order; and each pair still pushes its two sides
+// equally and oppositely, so momentum is kept.
+void repelClothPairs(std::vector<ContactBody>& bodies, const std::vector<NearPair>& nearPairs,
+                     const ContactStepSettings& settings, PassCounts& counts) {
+  struct Push {
+    const NearPair* near;
+    Vec3 impulse;  // on side a; side b takes its opposite
+  };
+  std::vector<Push> pushes;
+  std::vector<std::vector<int>> pushesOf(bodies.size());  // per body and vertex: the pairs pushing it
+  auto countSide = [&](const ContactSide& side) {
+    std::vector<int>& vertexPushes = pushesOf[side.body];
+    if (vertexPushes.empty()) vertexPushes.assign(bodies[side.body].v->size(), 0);
+    for (int k = 0; k < side.count; ++k) ++vertexPushes[side.vertex[k]];
+  };
+  for (const NearPair& near : nearPairs) {
+    if (!(near.distance < settings.thickness) || !isClothPair(bodies, near.pair)) continue;
+    const Repulsion r = repulsion(bodies, near, settings);
+    const PairImpulse impulse =
+        contactImpulse(bodies, near.a, near.b, r.normal, r.target, pairFriction(bodies, near.pair), settings.h);
+    if (!impulse.result.applied) continue;
+    ++counts.proximityImpulses;
+    pushes.push_back({&near, impulse.normal + impulse.friction});
+    countSide(near.a);
+    countSide(near.b);
+  }
+  auto sharedBy = [&](const ContactSide& side) {
+    double n = 0.0;
+    for (int k = 0; k < side.count; ++k) n += side.weight[k] * pushesOf[side.body][side.vertex[k]];
+    return n;
+  };
+  for (const Push& push : pushes) {
+    // Each side's weights add up to 1 and each of its vertices has this push among its own, so the
+    // share is at most 1.
+    const double share = 2.0 / (sharedBy(push.near->a) + sharedBy(push.near->b));
+    applySideImpulse(bodies, push.near->a, share * push.impulse, settings.h);
+    applySideImpulse(bodies, push.near->b, -share * push.impulse, settings.h);
+  }
+}
+
 }  // namespace
 
 void runProximityPass(std::vector<ContactBody>& bodies, const std::vector<NearPair>& nearPairs,
                       const ContactStepSettings& settings, PassCounts& counts) {
   if (settings.ground != nullptr) groundProximity(bodies, settings, counts);
+  // Against obstacles, one impulse after another: a vertex has few such pairs, and the obstacles'
+  // side of each is fixed or one rigid body.
   for (const NearPair& near : nearPairs) {
-    if (!(near.distance < settings.thickness)) continue;
-    Vec3 normal = near.normal;
-    if (near.touching) {
-      normal = orientAgainstApproach(normal, sideVelocity(bodies, near.a, settings.h) - sideVelocity(bodies, near.b, settings.h));
-    }
-    const double target = kRepulsionFraction * (settings.thickness - near.distance) / settings.h;
+    if (!(near.distance < settings.thickness) || isClothPair(bodies, near.pair)) continue;
+    const Repulsion r = repulsion(bodies, near, settings);
     const ImpulseResult result =
-        applyContactImpulse(bodies, near.a, near.b, normal, target, pairFriction(bodies, near.pair), settings.h);
+        applyContactImpulse(bodies, near.a, near.b, r.normal, r.target, pairFriction(bodies, near.pair), settings.h);
     if (result.applied) ++counts.proximityImpulses;
   }
+  repelClothPairs(bodies, nearPairs, settings, counts);
 }
 
 }  // namespace weft

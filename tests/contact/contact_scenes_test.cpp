@@ -291,9 +291,10 @@ TEST(ContactScenes, ReusingNearPairsGivesTheSameSimulationBitForBit) {
     double leastServedShare;  // of the uses, the share the cache must have answered itself
   };
   // A falling, folding sheet and a tearing one make the cache step aside often (fast motion, new
-  // topology); a drape on a ball is what it is for.
+  // topology); a drape on a ball is what it is for. (The folding sheet's cache answers 30% of its
+  // uses since cloth-on-cloth repulsion is averaged, 163 of 548; it answered a little more before.)
   const std::vector<Case> cases = {
-      {"sheet-folds-on-ground", {"cloths.0.mesh.grid.resolution=[20,20]"}, 120, 0.3},
+      {"sheet-folds-on-ground", {"cloths.0.mesh.grid.resolution=[20,20]"}, 120, 0.25},
       {"ball-into-sheet-table4.1-cloth1", {}, 48, 0.1},
       {"sheet-on-sphere", {"cloths.0.mesh.grid.resolution=[24,24]"}, 120, 0.5},
   };
