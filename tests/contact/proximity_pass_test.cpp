@@ -108,11 +108,11 @@ TEST(ProximityPass, ClothLayersAreRepelledAlikeWhateverTheOrderOfTheirPairsAndKe
     EXPECT_EQ(forward.x1[i], forward.x0[i] + TwoLayers::kStep * forward.v[i]) << "x1 follows v";
   }
   EXPECT_LT(largest, 1e-12);
-  // And the upper layer's fall is slowed (each vertex takes about the mean of its pairs' pushes,
-  // a tenth of the overlap a step being restored: here by a quarter; pass 2 stops the rest).
+  // And the upper layer's fall is mostly stopped (a tenth of the overlap a step is restored; the
+  // sweeps bring it from -0.1 to -0.045 m/s here, one sweep alone to -0.075).
   for (std::size_t i = half; i < forward.v.size(); ++i) upperAfter += forward.v[i].z();
   EXPECT_LT(upperBefore / half, -0.09);
-  EXPECT_GT(upperAfter / half, -0.08);
+  EXPECT_GT(upperAfter / half, -0.06);
 }
 
 }  // namespace
