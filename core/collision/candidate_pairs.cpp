@@ -22,22 +22,6 @@ namespace weft {
 
 namespace {
 
-// Box `a` grown by `growth` overlaps box `b` grown by `growth` (as 0 or 1, no branch). Computed
-// as (lo - growth) and (hi + growth), exactly what Aabb::inflate does, so the result is the same
-// as inflating both boxes and calling Aabb::overlaps.
-int overlapGrownBoth(const Aabb& a, const Aabb& b, double growth) {
-  return ((a.lo.x() - growth) <= (b.hi.x() + growth)) & ((b.lo.x() - growth) <= (a.hi.x() + growth)) &
-         ((a.lo.y() - growth) <= (b.hi.y() + growth)) & ((b.lo.y() - growth) <= (a.hi.y() + growth)) &
-         ((a.lo.z() - growth) <= (b.hi.z() + growth)) & ((b.lo.z() - growth) <= (a.hi.z() + growth));
-}
-
-// Box `a` grown by `growth` overlaps box `b`, which is grown already (a triangle box).
-int overlapGrownFirst(const Aabb& a, const Aabb& b, double growth) {
-  return ((a.lo.x() - growth) <= b.hi.x()) & (b.lo.x() <= (a.hi.x() + growth)) &
-         ((a.lo.y() - growth) <= b.hi.y()) & (b.lo.y() <= (a.hi.y() + growth)) &
-         ((a.lo.z() - growth) <= b.hi.z()) & (b.lo.z() <= (a.hi.z() + growth));
-}
-
 // Evaluated without branches: nine comparisons are cheaper than the mispredictions of
 // short-circuiting them on every triangle pair the BVH reports.
 bool shareCorner(const std::array<int, 3>& s, const std::array<int, 3>& t) {
@@ -239,7 +223,7 @@ void addVertexFacePairs(const SweptMesh& vertices, int owner, const SweptMesh& f
   out.reserve(3);
   for (int s = owned.ids.begin[owner]; s < owned.ids.end[owner]; ++s) {
     const int v = owned.ids.items[s];
-    out.add(overlapGrownFirst(owned.boxes[s], faceBox, boxGrowth(margin)) & (sideOfCorner(corners, ownerSides, v) == 0),
+    out.add(grownOverlap(owned.boxes[s], boxGrowth(margin), faceBox, 0.0) & (sideOfCorner(corners, ownerSides, v) == 0),
             {v, face});
   }
 }
@@ -264,14 +248,14 @@ void addEdgeEdgePairs(const SweptMesh& a, int i, const SweptMesh& b, int j, doub
     const int ea = ownedA.ids.items[s];
     const auto& endsA = a.mesh->edges[ea];
     // An edge of i that misses triangle j's box, or stays clear of its plane, misses all of j's edges.
-    if (!overlapGrownFirst(boxA, triangleBoxB, boxGrowth(margin)) ||
+    if (!grownOverlap(boxA, boxGrowth(margin), triangleBoxB, 0.0) ||
         edgeClear(sideOfCorner(cornersA, sides.ofA, endsA[0]), sideOfCorner(cornersA, sides.ofA, endsA[1]))) {
       continue;
     }
     for (int t = beginB; t < endB; ++t) {
       const int eb = ownedB.ids.items[t];
       const auto& endsB = b.mesh->edges[eb];
-      const int keep = overlapGrownBoth(boxA, ownedB.boxes[t], boxGrowth(margin)) &
+      const int keep = grownOverlap(boxA, boxGrowth(margin), ownedB.boxes[t], boxGrowth(margin)) &
                        (edgeClear(sideOfCorner(cornersB, sides.ofB, endsB[0]),
                                   sideOfCorner(cornersB, sides.ofB, endsB[1])) == 0);
       out.add(keep, kOrdered ? EdgeEdgePair{std::min(ea, eb), std::max(ea, eb)} : EdgeEdgePair{ea, eb});
@@ -355,20 +339,9 @@ bool isUpToDate(const SweptMesh& swept, int triangleCount) {
 
 namespace {
 
-// The box of `corners` over the step (x0 to x1).
-template <std::size_t N>
-Aabb sweptBoxOf(const std::array<int, N>& corners, const std::vector<Vec3>& x0, const std::vector<Vec3>& x1) {
-  Aabb box;
-  for (int v : corners) {
-    box.grow(x0[v]);
-    box.grow(x1[v]);
-  }
-  return box;
-}
-
 void updateTriangle(SweptMesh& swept, std::size_t t, double margin) {
   const auto& corners = swept.mesh->triangles[t];
-  Aabb box = sweptBoxOf(corners, *swept.x0, *swept.x1);
+  Aabb box = sweptBox(swept, corners);
   box.inflate(boxGrowth(margin));
   swept.triangleBoxes[t] = box;
   swept.planes[t] = fixedPlane(corners, *swept.x0, *swept.x1);
@@ -376,12 +349,12 @@ void updateTriangle(SweptMesh& swept, std::size_t t, double margin) {
 
 void updateVertexSlot(SweptMesh& swept, std::size_t s) {
   OwnedFeatures& vertices = swept.features.vertices;
-  vertices.boxes[s] = sweptBoxOf(std::array<int, 1>{vertices.ids.items[s]}, *swept.x0, *swept.x1);
+  vertices.boxes[s] = sweptBox(swept, std::array<int, 1>{vertices.ids.items[s]});
 }
 
 void updateEdgeSlot(SweptMesh& swept, std::size_t s) {
   OwnedFeatures& edges = swept.features.edges;
-  edges.boxes[s] = sweptBoxOf(swept.mesh->edges[edges.ids.items[s]], *swept.x0, *swept.x1);
+  edges.boxes[s] = sweptBox(swept, swept.mesh->edges[edges.ids.items[s]]);
 }
 
 bool anyFixedPlane(const std::vector<FixedPlane>& planes) {
@@ -620,14 +593,14 @@ void findSelfCandidatePairs(const SweptMesh& a, double margin, CandidatePairs& o
       for (int k = vertexFace.begin[i]; k < vertexFace.end[i]; ++k) {
         const auto [slot, face] = vertexFace.items[k];
         vf.reserve(1);
-        vf.add(overlapGrownFirst(features.vertices.boxes[slot], a.triangleBoxes[face], boxGrowth(margin)),
+        vf.add(grownOverlap(features.vertices.boxes[slot], boxGrowth(margin), a.triangleBoxes[face], 0.0),
                {features.vertices.ids.items[slot], face});
       }
       for (int k = edgeEdge.begin[i]; k < edgeEdge.end[i]; ++k) {
         const auto [slotA, slotB] = edgeEdge.items[k];
         ee.reserve(1);
         const int ea = features.edges.ids.items[slotA], eb = features.edges.ids.items[slotB];
-        ee.add(overlapGrownBoth(features.edges.boxes[slotA], features.edges.boxes[slotB], boxGrowth(margin)),
+        ee.add(grownOverlap(features.edges.boxes[slotA], boxGrowth(margin), features.edges.boxes[slotB], boxGrowth(margin)),
                {std::min(ea, eb), std::max(ea, eb)});
       }
     }

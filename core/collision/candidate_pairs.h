@@ -76,6 +76,26 @@ struct SweptMesh {
   const std::vector<Vec3>* boxesX1 = nullptr;
 };
 
+// The box the vertices `ids` of `m` sweep over the step (x0 to x1), not grown.
+template <std::size_t N>
+Aabb sweptBox(const SweptMesh& m, const std::array<int, N>& ids) {
+  Aabb box;
+  for (int v : ids) {
+    box.grow((*m.x0)[v]);
+    box.grow((*m.x1)[v]);
+  }
+  return box;
+}
+
+// Box `a` grown by `growA` overlaps box `b` grown by `growB` (as 0 or 1, without a branch: about
+// half of the tests in a search pass, which no branch predictor can learn). Computed as
+// (lo - grow) and (hi + grow), exactly what Aabb::inflate does.
+inline int grownOverlap(const Aabb& a, double growA, const Aabb& b, double growB) {
+  return ((a.lo.x() - growA) <= (b.hi.x() + growB)) & ((b.lo.x() - growB) <= (a.hi.x() + growA)) &
+         ((a.lo.y() - growA) <= (b.hi.y() + growB)) & ((b.lo.y() - growB) <= (a.hi.y() + growA)) &
+         ((a.lo.z() - growA) <= (b.hi.z() + growB)) & ((b.lo.z() - growB) <= (a.hi.z() + growA));
+}
+
 // Recomputes the triangle boxes (x0, x1, grown by boxGrowth(margin)), the feature boxes and the fixed
 // planes. Builds the BVH
 // and the topology-derived features if the mesh's triangles differ from those they were built for

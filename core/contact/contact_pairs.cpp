@@ -29,23 +29,6 @@ void findPrimitivePairs(std::vector<ContactBody>& bodies, const ContactPairing& 
 
 namespace {
 
-// The box a feature's vertices sweep over the step (x0 to x1), not grown.
-template <std::size_t N>
-Aabb sweptBox(const SweptMesh& m, const std::array<int, N>& ids) {
-  Aabb box;
-  for (int v : ids) {
-    box.grow((*m.x0)[v]);
-    box.grow((*m.x1)[v]);
-  }
-  return box;
-}
-
-bool grownOverlap(const Aabb& a, double growA, const Aabb& b, double growB) {
-  return a.lo.x() - growA <= b.hi.x() + growB && b.lo.x() - growB <= a.hi.x() + growA &&
-         a.lo.y() - growA <= b.hi.y() + growB && b.lo.y() - growB <= a.hi.y() + growA &&
-         a.lo.z() - growA <= b.hi.z() + growB && b.lo.z() - growB <= a.hi.z() + growA;
-}
-
 // The pairs of one body pair (A, B), or of a body with itself (then all vertex-face pairs are in
 // vfAB and each edge pair is (smaller, larger)), as (feature of the first, feature of the second).
 struct TouchingLists {
