@@ -30,6 +30,7 @@ void accumulateTopologyChange(TopologyChange& into, const TopologyChange& next) 
   mergeSorted(into.tornEdges, next.tornEdges);
   append(into.crackEnds, next.crackEnds);
   mergeSorted(into.massChangedVertices, next.massChangedVertices);
+  mergeSorted(into.movedVertices, next.movedVertices);
 }
 
 }  // namespace weft

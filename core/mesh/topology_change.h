@@ -20,6 +20,8 @@ struct TopologyChange {
   std::vector<int> crackEnds;                    // far end of each opened edge, after separation: where the crack
                                                  // now ends (a tear usually continues from there)
   std::vector<int> massChangedVertices;          // vertices whose lumped mass or velocity changed (sorted)
+  std::vector<int> movedVertices;                // vertices moved in material space onto a tear line (their rest
+                                                 // corners and world positions changed; sorted)
 
   bool empty() const { return changedTriangles.empty() && changedEdges.empty() && newVertices.empty(); }
 };

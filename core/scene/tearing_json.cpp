@@ -8,10 +8,11 @@ namespace weft {
 
 TearingSpec parseTearing(const nlohmann::json& j, const std::string& pointer, const SceneReadContext& ctx) {
   const FieldReader r(j, pointer, ctx.file,
-                      {"candidates", "dense_directions", "skip_by_bound", "tears_per_step", "min_spacing_m",
-                       "min_edge_length_m", "min_angle_deg", "snap_angle_deg"});
+                      {"candidates", "dense_directions", "skip_by_bound", "propagate", "crack_speed_m_per_s", "relax_rings",
+                       "relax_sweeps", "branch_from_lips", "tears_per_step", "min_spacing_m", "min_edge_length_m", "min_angle_deg",
+                       "snap_angle_deg"});
   TearingSpec tearing;
-  const std::string lines = r.string("candidates", "thesis");
+  const std::string lines = r.string("candidates", "dense");
   if (lines != "thesis" && lines != "dense") {
     r.fail(r.pointer("candidates"), "must be \"thesis\" (three lines per incident triangle) or \"dense\" (the whole "
                                     "fan), got \"" + lines + "\"");
@@ -19,6 +20,14 @@ TearingSpec parseTearing(const nlohmann::json& j, const std::string& pointer, co
   tearing.denseLines = lines == "dense";
   tearing.denseDirections = r.integer("dense_directions", tearing.denseDirections, 4);
   tearing.skipByBound = r.boolean("skip_by_bound", tearing.skipByBound);
+  tearing.propagate = r.boolean("propagate", tearing.propagate);
+  tearing.crackSpeed = r.number("crack_speed_m_per_s", tearing.crackSpeed, Bound::Positive,
+                                "the fastest a crack tip runs in m/s");
+  tearing.relaxRings = r.integer("relax_rings", tearing.relaxRings, 0);
+  if (tearing.relaxRings > 8) r.fail(r.pointer("relax_rings"), "must be at most 8 (the relaxed patch grows as its square)");
+  tearing.relaxSweeps = r.integer("relax_sweeps", tearing.relaxSweeps, 0);
+  if (tearing.relaxSweeps > 100) r.fail(r.pointer("relax_sweeps"), "must be at most 100");
+  tearing.branchFromLips = r.boolean("branch_from_lips", tearing.branchFromLips);
   tearing.maxTearsPerStep = r.integer("tears_per_step", tearing.maxTearsPerStep, 1);
   tearing.minSpacing = r.number("min_spacing_m", tearing.minSpacing, Bound::NonNegative,
                                 "the spacing of several tears in one step in m");

@@ -6,11 +6,23 @@ namespace weft {
 
 
 struct TearingSpec {
-  bool denseLines = false;       // false: the thesis' three lines per incident triangle; true: the whole fan
+  bool denseLines = true;        // true: the whole fan (any direction); false: the thesis' three lines per
+                                 // incident triangle (its edges and bisector: the grid's directions)
   int denseDirections = 180;     // dense: samples per half turn (per fan for a border vertex)
   bool skipByBound = true;       // skip vertices whose separation-strength bound cannot reach the table
-  int maxTearsPerStep = 1;       // per cloth; the thesis tears one line per step
-  double minSpacing = 0.1;       // m (material space): several tears in one step keep this apart
+  // Crack growth within a step (tear_stage.h). true: after each tear the stress around the new
+  // crack ends is relaxed and the cloth tears on while omega > 1, each crack tip advancing at most
+  // crackSpeed * dt per step; false (default): the thesis' one pass per step (maxTearsPerStep
+  // lines), the next step's dynamics relaxing the stress. The README says why false is the default.
+  bool propagate = false;
+  double crackSpeed = 20.0;      // m/s (material space): with propagate, the fastest a crack tip runs
+  int relaxRings = 2;            // vertices within this many edges of a new crack end are relaxed
+  int relaxSweeps = 6;           // Jacobi sweeps of that relaxation
+  bool branchFromLips = false;   // a vertex on a crack's flank may start a new crack (shattering)
+  int maxTearsPerStep = 1;       // per cloth per step: new cracks (with propagate) or lines (without);
+                                 // the thesis tears one
+  double minSpacing = 0.1;       // m (material space): a tear that starts a crack keeps this far from the
+                                 // step's other tears (a crack's own tips run on regardless)
   // The guards of the mesh surgery (tearing/tear_guards.h says why these values).
   double minEdgeLength = 0.001;  // m (material space): no tear creates a shorter edge
   double minAngleDeg = 15.0;     // no tear creates a triangle with a smaller angle

@@ -50,7 +50,7 @@ void World::step() {
     w.contact->applyHeldReactions(w.cloths, w.obstacles, h);
     w.contact->resolve(w.cloths, w.startPositions, w.obstacles, h, w.profile);
     w.endObstacles();
-    w.tear(inputs.time + h);
+    w.tear(inputs.time + h, h);
   }
   ++w.steps;
   w.time = w.timeOrigin + static_cast<double>(w.steps - w.stepsAtOrigin) * w.scene.solver.dt;

@@ -65,9 +65,9 @@ struct World::Impl {
   }
   // Tears what must tear, and has whatever depends on a torn cloth's topology patched with what
   // changed (the matrix pattern, the collision topology and broad phase).
-  void tear(double time) {
+  void tear(double time, double dt) {
     if (!tearing->runs()) return;
-    const std::vector<TopologyChange> changes = tearing->run(cloths, time, profile);
+    const std::vector<TopologyChange> changes = tearing->run(cloths, time, dt, profile);
     for (size_t c = 0; c < cloths.size(); ++c) {
       if (changes[c].empty()) continue;
       integrators[c]->topologyChanged(cloths[c], changes[c]);

@@ -1,9 +1,14 @@
 #include "tearing/cut_ray.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace weft {
 namespace {
+
+// A spoke this close in angle to the ray lies on the line (rad): a vertex moved onto the line, or
+// a line along the grid, up to round-off.
+constexpr double kOnTheLine = 1e-9;
 
 // Whatever the guards say, a crossing never makes a flat or inverted triangle.
 bool passesGuards(const std::array<Vec2, 3>& shape, const TearGuards& guards) {
@@ -17,7 +22,7 @@ bool passesGuards(const std::array<Vec2, 3>& shape, const TearGuards& guards) {
 }  // namespace
 
 std::optional<RayCut> planRayCut(const ClothMesh& mesh, const VertexFan& fan, const Vec2& direction,
-                                 const TearGuards& guards) {
+                                 const TearGuards& guards, const std::vector<int>& keep) {
   const int hit = fanTriangleHitBy(mesh, fan, direction);
   if (hit == kNone) return std::nullopt;
   const Triangle& t = mesh.tris[fan.triangles[hit]];
@@ -30,28 +35,66 @@ std::optional<RayCut> planRayCut(const ClothMesh& mesh, const VertexFan& fan, co
   const double sinCounterClockwise = cross2(direction, toCounterClockwise);
   const double angleToClockwise = std::atan2(sinClockwise, toClockwise.dot(direction));
   const double angleToCounterClockwise = std::atan2(sinCounterClockwise, toCounterClockwise.dot(direction));
-  const int nearerSpoke = angleToClockwise <= angleToCounterClockwise ? clockwiseSpoke(mesh, fan, hit)
-                                                                      : counterClockwiseSpoke(mesh, fan, hit);
+  const bool clockwiseNearer = angleToClockwise <= angleToCounterClockwise;
+  const int clockwise = clockwiseSpoke(mesh, fan, hit);
+  const int counterClockwise = counterClockwiseSpoke(mesh, fan, hit);
 
-  auto follow = [&]() -> std::optional<RayCut> {
-    if (mesh.edges[nearerSpoke].isBoundary()) return std::nullopt;
+  auto follow = [&](int spoke, std::optional<VertexMove> move = std::nullopt) -> std::optional<RayCut> {
+    if (mesh.edges[spoke].isBoundary()) return std::nullopt;
     RayCut cut;
-    cut.spoke = nearerSpoke;
+    cut.spoke = spoke;
+    cut.move = move;
     return cut;
   };
-  if (std::min(angleToClockwise, angleToCounterClockwise) <= degToRad(guards.snapAngleDeg)) return follow();
+  if (std::min(angleToClockwise, angleToCounterClockwise) <= kOnTheLine) {
+    return follow(clockwiseNearer ? clockwise : counterClockwise);
+  }
 
   // The ray meets the opposite side (clockwise end A to counter-clockwise end B) at A + s (B - A),
   // where the vector from the vertex is parallel to the ray:
   //   cross(toA + s (toB - toA), d) = 0  =>  s = cross(toA, d) / (cross(toA, d) + cross(d, toB)).
-  RayCut cut;
-  cut.split.triangle = fan.triangles[hit];
-  cut.split.side = (k + 1) % 3;
-  cut.split.fraction = sinClockwise / (sinClockwise + sinCounterClockwise);
-  for (const auto& shape : restShapesAfterSplit(mesh, cut.split)) {
-    if (!passesGuards(shape, guards)) return follow();
+  RayCut crossing;
+  crossing.split.triangle = fan.triangles[hit];
+  crossing.split.side = (k + 1) % 3;
+  crossing.split.fraction = sinClockwise / (sinClockwise + sinCounterClockwise);
+  const bool beyondSnap = std::min(angleToClockwise, angleToCounterClockwise) > degToRad(guards.snapAngleDeg);
+  if (beyondSnap) {
+    const auto shapes = restShapesAfterSplit(mesh, crossing.split);
+    if (std::all_of(shapes.begin(), shapes.end(), [&](const auto& s) { return passesGuards(s, guards); })) {
+      return crossing;
+    }
   }
-  return cut;
+
+  // Move an end of the opposite side onto the line and follow its spoke: the end nearer the
+  // crossing first (the smaller move).
+  const int endA = t.v[(k + 1) % 3], endB = t.v[(k + 2) % 3];
+  const bool aFirst = crossing.split.fraction <= 0.5;
+  for (const bool useA : {aFirst, !aFirst}) {
+    const int end = useA ? endA : endB;
+    const int spoke = useA ? clockwise : counterClockwise;
+    if (mesh.edges[spoke].isBoundary() || std::find(keep.begin(), keep.end(), end) != keep.end()) continue;
+    if (const std::optional<VertexMove> move = planVertexMove(mesh, end, t.rest[k], direction, guards)) {
+      // The moved end is on the ray's side of the vertex (never behind it).
+      if ((move->to - t.rest[k]).dot(direction) > 0.0) return follow(spoke, move);
+    }
+  }
+  // Across after all, when the pieces at the vertex are sound and only the neighbour beyond the
+  // crossed side is thin: flips repair that (and the crack keeps its line).
+  if (beyondSnap) {
+    const auto shapes = restShapesAfterSplit(mesh, crossing.split);
+    const auto atVertex = [&](const std::array<Vec2, 3>& shape) {
+      return std::any_of(shape.begin(), shape.end(), [&](const Vec2& p) { return (p - t.rest[k]).norm() == 0.0; });
+    };
+    const bool soundAtVertex = std::all_of(shapes.begin(), shapes.end(), [&](const auto& shape) {
+      return !atVertex(shape) || passesGuards(shape, guards);
+    });
+    if (shapes.size() == 4 && soundAtVertex) {
+      crossing.repair = true;
+      return crossing;
+    }
+  }
+  if (!beyondSnap) return follow(clockwiseNearer ? clockwise : counterClockwise);
+  return std::nullopt;
 }
 
 }  // namespace weft

@@ -15,12 +15,12 @@ namespace {
 constexpr double kRadToDeg = 180.0 / std::numbers::pi;
 
 // omega of the line at `angle` whose separation strength is `zeta`.
-TearCandidate evaluateLine(double angle, double zeta, const TearTable& table, double weftAngleRad) {
+TearCandidate evaluateLine(double angle, double zeta, const TearTable& table, double weftAngleRad, double scale) {
   TearCandidate line;
   line.angle = angle;
   line.separation = zeta;
   line.alphaDeg = angleFromWarpDeg(angle, weftAngleRad);
-  line.required = requiredStrength(table, line.alphaDeg);
+  line.required = scale * requiredStrength(table, line.alphaDeg);
   line.ratio = zeta / line.required;
   return line;
 }
@@ -29,22 +29,22 @@ TearCandidate evaluateLine(double angle, double zeta, const TearTable& table, do
 // strength), so a line whose zeta cannot beat `best` skips the direction and table lookups (the
 // margin covers rounding: the result is the same as evaluating everything).
 void keepIfBetter(const StressFan& fan, double angle, const TearTable& table, double weakest, double weftAngleRad,
-                  TearCandidate& best) {
+                  double scale, TearCandidate& best) {
   const double zeta = separationStrength(fan, angle);
   if (zeta < best.ratio * weakest * (1.0 - 1e-12)) return;
-  const TearCandidate trial = evaluateLine(angle, zeta, table, weftAngleRad);
+  const TearCandidate trial = evaluateLine(angle, zeta, table, weftAngleRad, scale);
   if (trial.ratio > best.ratio) best = trial;
 }
 
 // The thesis' lines: both edges and the bisector of each incident corner. On an open fan the
 // border edges are skipped (a ray along the border separates nothing).
 TearCandidate bestThesisLine(const StressFan& fan, const TearTable& table, double weakest, double weftAngleRad,
-                             TearSearchCounts& counts) {
+                             double scale, TearSearchCounts& counts) {
   TearCandidate best;
   for (const FanSector& sector : fan.sectors) {
     for (const double angle : {sector.start, sector.start + 0.5 * sector.span, sector.start + sector.span}) {
       ++counts.linesEvaluated;
-      keepIfBetter(fan, angle, table, weakest, weftAngleRad, best);
+      keepIfBetter(fan, angle, table, weakest, weftAngleRad, scale, best);
     }
   }
   return best;
@@ -53,7 +53,7 @@ TearCandidate bestThesisLine(const StressFan& fan, const TearTable& table, doubl
 // Dense sampling of the fan, then a golden-section search on omega between the best sample's
 // neighbours (omega need not be unimodal there; the search only improves on the sample).
 TearCandidate bestDenseLine(const StressFan& fan, const TearTable& table, double weakest, double weftAngleRad,
-                            int samples, TearSearchCounts& counts) {
+                            double scale, int samples, TearSearchCounts& counts) {
   const double from = fan.closed ? 0.0 : fan.openStart;
   const double range = fan.closed ? std::numbers::pi : fan.openSpan;
   const double step = range / samples;
@@ -61,7 +61,7 @@ TearCandidate bestDenseLine(const StressFan& fan, const TearTable& table, double
   for (int k = 0; k < samples; ++k) {
     ++counts.linesEvaluated;
     // Rays sit at the middle of their sample interval, so none lies along the open fan's border.
-    keepIfBetter(fan, from + (fan.closed ? k : k + 0.5) * step, table, weakest, weftAngleRad, best);
+    keepIfBetter(fan, from + (fan.closed ? k : k + 0.5) * step, table, weakest, weftAngleRad, scale, best);
   }
   if (!(best.ratio > 0.0)) return best;
   const double invPhi = (std::sqrt(5.0) - 1.0) / 2.0;
@@ -70,8 +70,8 @@ TearCandidate bestDenseLine(const StressFan& fan, const TearTable& table, double
   for (int iteration = 0; iteration < 20; ++iteration) {
     const double a = hi - invPhi * (hi - lo), b = lo + invPhi * (hi - lo);
     counts.linesEvaluated += 2;
-    const TearCandidate left = evaluateLine(a, separationStrength(fan, a), table, weftAngleRad);
-    const TearCandidate right = evaluateLine(b, separationStrength(fan, b), table, weftAngleRad);
+    const TearCandidate left = evaluateLine(a, separationStrength(fan, a), table, weftAngleRad, scale);
+    const TearCandidate right = evaluateLine(b, separationStrength(fan, b), table, weftAngleRad, scale);
     if (left.ratio > best.ratio) best = left;
     if (right.ratio > best.ratio) best = right;
     if (left.ratio >= right.ratio) {
@@ -84,6 +84,46 @@ TearCandidate bestDenseLine(const StressFan& fan, const TearTable& table, double
 }
 
 }  // namespace
+
+TearCandidate bestLineAt(const StressFan& fan, const TearTable& table, double weftAngleRad,
+                         const TearSearchSettings& settings, double strengthScale, TearSearchCounts& counts) {
+  const double weakest = strengthScale * weakestStrength(table);
+  return settings.lines == CandidateLines::Thesis
+             ? bestThesisLine(fan, table, weakest, weftAngleRad, strengthScale, counts)
+             : bestDenseLine(fan, table, weakest, weftAngleRad, strengthScale, settings.denseDirections, counts);
+}
+
+std::vector<TearCandidate> linesAboveOneAt(const StressFan& fan, const TearTable& table, double weftAngleRad,
+                                           const TearSearchSettings& settings, double strengthScale) {
+  std::vector<TearCandidate> lines;
+  if (settings.lines == CandidateLines::Thesis) {
+    for (const FanSector& sector : fan.sectors) {
+      for (const double angle : {sector.start, sector.start + 0.5 * sector.span, sector.start + sector.span}) {
+        lines.push_back(evaluateLine(angle, separationStrength(fan, angle), table, weftAngleRad, strengthScale));
+      }
+    }
+  } else {
+    // The dense samples' local maxima: each a different way the vertex could open.
+    const double from = fan.closed ? 0.0 : fan.openStart;
+    const double range = fan.closed ? std::numbers::pi : fan.openSpan;
+    const int n = std::max(4, settings.denseDirections);
+    std::vector<TearCandidate> samples;
+    for (int k = 0; k < n; ++k) {
+      const double angle = from + (fan.closed ? k : k + 0.5) * range / n;
+      samples.push_back(evaluateLine(angle, separationStrength(fan, angle), table, weftAngleRad, strengthScale));
+    }
+    for (int k = 0; k < n; ++k) {
+      const bool wraps = fan.closed;
+      const double before = k > 0 ? samples[k - 1].ratio : wraps ? samples[n - 1].ratio : -1.0;
+      const double after = k + 1 < n ? samples[k + 1].ratio : wraps ? samples[0].ratio : -1.0;
+      if (samples[k].ratio >= before && samples[k].ratio > after) lines.push_back(samples[k]);
+    }
+  }
+  std::erase_if(lines, [](const TearCandidate& c) { return !(c.ratio > 1.0); });
+  std::stable_sort(lines.begin(), lines.end(),
+                   [](const TearCandidate& a, const TearCandidate& b) { return a.ratio > b.ratio; });
+  return lines;
+}
 
 double angleFromWarpDeg(double angle, double weftAngleRad) {
   const Vec2 C(std::cos(angle), std::sin(angle));
@@ -114,11 +154,7 @@ void findTearCandidates(const ClothMesh& mesh, const std::vector<TriangleCorners
     stressFan(mesh, v, std::span<const int>(around.data() + rowStart[v], around.data() + rowStart[v + 1]), corners,
               triangleStress, fan);
   };
-  auto bestLineOf = [&](const StressFan& fan) {
-    return settings.lines == CandidateLines::Thesis
-               ? bestThesisLine(fan, table, weakest, weftAngleRad, counts)
-               : bestDenseLine(fan, table, weakest, weftAngleRad, settings.denseDirections, counts);
-  };
+  auto bestLineOf = [&](const StressFan& fan) { return bestLineAt(fan, table, weftAngleRad, settings, 1.0, counts); };
   auto candidateOf = [&](int v, const StressFan& fan, TearCandidate best) {
     best.vertex = v;
     const Triangle& first = mesh.tris[around[rowStart[v]]];

@@ -23,9 +23,10 @@ namespace weft {
 enum class CandidateLines { Thesis, Dense };
 
 struct TearSearchSettings {
-  CandidateLines lines = CandidateLines::Thesis;
+  CandidateLines lines = CandidateLines::Dense;
   int denseDirections = 180;  // samples over a line's half turn (over the fan for a ray)
   bool skipByBound = true;    // skip vertices whose zeta bound is below the weakest strength
+  bool branchFromLips = false;  // a vertex on a crack's flank may start a new crack (tear_search.h)
   bool onlyTheBest = false;   // with skipByBound: return only the best vertex's line (one tear per
                               // step), skipping every vertex whose bound cannot beat the best so far
 };
@@ -35,6 +36,7 @@ struct TearCandidate {
   Vec2 restPosition = Vec2::Zero();  // the vertex in material space (m)
   double angle = 0.0;       // direction of the line (or ray) in material space (rad)
   bool ray = false;         // the vertex is on a border or a tear: only the ray at `angle` opens
+  bool crackTip = false;    // the vertex is where a crack ends (the tear continues it)
   double separation = 0.0;  // zeta (N/m)
   double required = 0.0;    // R(alpha) (N/m)
   double alphaDeg = 0.0;    // angle from the warp direction V, Eq. 3.1-3.3, in [0, 180)
@@ -50,6 +52,16 @@ struct TearSearchCounts {
 // alpha of a line at `angle` (rad, material space) from the warp direction V of a cloth whose weft
 // U is at weftAngleRad from material x: Eq. 3.1-3.3 as printed (degrees, in [0, 180)).
 double angleFromWarpDeg(double angle, double weftAngleRad);
+
+// The best line of one vertex's fan (a full TearCandidate but for its vertex, position and ray
+// flag), with the table's strengths scaled by `strengthScale` (a crack tip's propagation factor).
+TearCandidate bestLineAt(const StressFan& fan, const TearTable& table, double weftAngleRad,
+                         const TearSearchSettings& settings, double strengthScale, TearSearchCounts& counts);
+
+// The other ways a vertex could open, when its best line is refused by the mesh: every line with
+// omega > 1, best first (the thesis' lines; for dense lines, the local maxima of the sampling).
+std::vector<TearCandidate> linesAboveOneAt(const StressFan& fan, const TearTable& table, double weftAngleRad,
+                                           const TearSearchSettings& settings, double strengthScale);
 
 // The best line of every vertex whose best omega exceeds 1, in vertex order (with onlyTheBest,
 // just the one selectTears would choose first).

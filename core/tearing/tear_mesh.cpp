@@ -2,9 +2,12 @@
 
 #include <algorithm>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "tearing/cut_ray.h"
+#include "tearing/flip_edge.h"
+#include "tearing/move_vertex.h"
 #include "tearing/separate_vertex.h"
 #include "tearing/split_edge.h"
 #include "tearing/vertex_fan.h"
@@ -15,22 +18,6 @@ namespace {
 void sortUnique(std::vector<int>& ids) {
   std::sort(ids.begin(), ids.end());
   ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
-}
-
-// The triangle across a planned split (kNone on a border).
-int neighbourAcrossSplit(const ClothMesh& mesh, const RayCut& cut) {
-  const Triangle& t = mesh.tris[cut.split.triangle];
-  return triangleAcross(mesh.edges[t.edge[cut.split.side]], cut.split.triangle);
-}
-
-// The two rays of an interior vertex are planned on the same mesh, so they must not change the
-// same element: one edge can be cut once, and a neighbour split by one ray would no longer be the
-// triangle the other ray's guards judged (only possible around a vertex of valence three).
-bool raysConflict(const ClothMesh& mesh, const RayCut& a, const RayCut& b) {
-  if (a.followsEdge() && b.followsEdge()) return a.spoke == b.spoke;
-  if (a.followsEdge() || b.followsEdge()) return false;
-  const int across = neighbourAcrossSplit(mesh, a);
-  return across != kNone && across == neighbourAcrossSplit(mesh, b);
 }
 
 // Sorts the lists and adds the edges of every changed triangle to changedEdges (their hinges
@@ -46,6 +33,40 @@ void finish(const ClothMesh& mesh, TopologyChange& change) {
   sortUnique(change.newEdges);
   sortUnique(change.tornEdges);
   sortUnique(change.massChangedVertices);
+  sortUnique(change.movedVertices);
+}
+
+// A split whose neighbour piece is thin, then flips around the split point until every triangle
+// there keeps the guards. When they cannot, the mesh and the change are put back as they were
+// (kept whole: the repair is rare, and a copy is simpler than undoing flips) and kNone is returned;
+// else the cut edge from the vertex to the split point.
+int splitAndRepair(ClothMesh& mesh, int vertex, const EdgeSplitPoint& at, const TearGuards& guards, double areaDensity,
+                   std::vector<int> keepEdges, TopologyChange& change) {
+  const ClothMesh meshBefore = mesh;
+  const TopologyChange changeBefore = change;
+  const int splitPoint = splitEdge(mesh, at, areaDensity, change);
+  const int cutEdge = edgeJoining(mesh, at.triangle, vertex, splitPoint);
+  const VertexFan around = walkFan(mesh, splitPoint, at.triangle);
+  TopologyChange flips;
+  keepEdges.push_back(cutEdge);
+  improveByFlips(mesh, around.triangles, keepEdges, areaDensity, flips);
+  bool sound = true;
+  for (int t : flips.changedTriangles) sound = sound && smallestRestAngle(mesh.tris[t]) >= degToRad(guards.minAngleDeg);
+  for (int t : walkFan(mesh, splitPoint, mesh.edges[cutEdge].tri[0]).triangles) {
+    sound = sound && smallestRestAngle(mesh.tris[t]) >= degToRad(guards.minAngleDeg);
+  }
+  if (!sound) {
+    mesh = meshBefore;
+    change = changeBefore;
+    return kNone;
+  }
+  // Appended, not merged: the lists are sorted once the tear is done (finish).
+  for (auto [into, from] : {std::pair{&change.changedTriangles, &flips.changedTriangles},
+                            std::pair{&change.changedEdges, &flips.changedEdges},
+                            std::pair{&change.massChangedVertices, &flips.massChangedVertices}}) {
+    into->insert(into->end(), from->begin(), from->end());
+  }
+  return cutEdge;
 }
 
 }  // namespace
@@ -56,34 +77,47 @@ bool tearThroughVertex(ClothMesh& mesh, int vertex, const Vec2& direction, const
   if (vertex < 0 || vertex >= mesh.vertexCount() || !direction.allFinite() || direction.squaredNorm() == 0.0) {
     return false;
   }
-  const int start = findTriangleAt(mesh, vertex);
+  int start = findTriangleAt(mesh, vertex);
   if (start == kNone) return false;
   const Vec2 along = direction.normalized();
 
-  // 1. Plan every ray before changing anything.
-  const VertexFan fan = walkFan(mesh, vertex, start);
-  std::vector<RayCut> cuts;
-  for (const Vec2& ray : fan.closed ? std::vector<Vec2>{along, -along} : std::vector<Vec2>{along}) {
-    const std::optional<RayCut> cut = planRayCut(mesh, fan, ray, guards);
-    if (!cut) return false;
-    cuts.push_back(*cut);
-  }
-  if (cuts.size() == 2 && raysConflict(mesh, cuts[0], cuts[1])) return false;
-
-  // 2. Split, and name the cut edges. A split keeps the entered triangle's id for the piece that
-  // holds the split side's first corner, and that piece also holds the vertex.
+  // 1. Each ray in turn, planned on the mesh as the rays before it left it, and carried out at
+  // once. An interior vertex needs both rays (one alone would leave a slit whose ends are not
+  // separated); when its second ray is refused, the mesh is put back as it was before the first
+  // (a copy: the second ray is rarely refused once the first passed).
+  const bool closed = walkFan(mesh, vertex, start).closed;
+  std::optional<ClothMesh> before;
+  if (closed) before = mesh;
   TopologyChange change;
   std::vector<int> cutEdges;
-  for (const RayCut& cut : cuts) {
-    if (cut.followsEdge()) {
-      cutEdges.push_back(cut.spoke);
-    } else {
-      const int splitPoint = splitEdge(mesh, cut.split, areaDensity, change);
-      cutEdges.push_back(edgeJoining(mesh, cut.split.triangle, vertex, splitPoint));
+  std::vector<int> keep{vertex};
+  for (const Vec2& ray : closed ? std::vector<Vec2>{along, -along} : std::vector<Vec2>{along}) {
+    if (cornerOf(mesh.tris[start], vertex) == kNone) start = findTriangleAt(mesh, vertex);  // flipped away
+    const std::optional<RayCut> cut = planRayCut(mesh, walkFan(mesh, vertex, start), ray, guards, keep);
+    if (!cut) {
+      if (before && !cutEdges.empty()) mesh = std::move(*before);
+      return false;
     }
+    int cutEdge = kNone;
+    if (cut->followsEdge()) {
+      if (cut->move) moveVertex(mesh, *cut->move, areaDensity, change);
+      cutEdge = cut->spoke;
+    } else if (!cut->repair) {
+      const int splitPoint = splitEdge(mesh, cut->split, areaDensity, change);
+      cutEdge = edgeJoining(mesh, cut->split.triangle, vertex, splitPoint);
+    } else {
+      cutEdge = splitAndRepair(mesh, vertex, cut->split, guards, areaDensity, cutEdges, change);
+      if (cutEdge == kNone) {
+        if (before && !cutEdges.empty()) mesh = std::move(*before);
+        return false;
+      }
+    }
+    cutEdges.push_back(cutEdge);
+    const Edge& edge = mesh.edges[cutEdge];
+    keep.push_back(edge.v[0] == vertex ? edge.v[1] : edge.v[0]);
   }
 
-  // 3. Open the cut edges and separate what they disconnect. Each vertex's triangles are
+  // 2. Open the cut edges and separate what they disconnect. Each vertex's triangles are
   // gathered before opening, while its fan is still whole.
   std::vector<int> ends{vertex};
   for (int e : cutEdges) {

@@ -4,15 +4,14 @@
 // Design. The physics (stress, separation strength) picks a vertex and a direction in material
 // space; this file only changes the mesh, locally and in a fixed order, so that the same call on
 // the same mesh gives the same ids:
-//   1. Plan each ray (cut_ray.h): an interior vertex (closed fan) is opened along +direction and
+//   1. Each ray in turn (cut_ray.h): an interior vertex (closed fan) is opened along +direction and
 //      -direction, a border vertex (on the border or an earlier tear) along +direction only, which
-//      must point into its fan. A ray follows an existing edge at the vertex when within the snap
-//      angle, or when crossing would break a guard; otherwise it crosses the triangle it enters,
-//      and that triangle's opposite side is split where the ray leaves it. Every ray is planned
-//      before anything changes, so a refused tear leaves the mesh untouched.
-//   2. Split the planned sides (split_edge.h); the edge from the vertex to each split point, or
-//      the followed edge, is a cut edge.
-//   3. Open the cut edges and separate every vertex left with two fans (separate_vertex.h): the
+//      must point into its fan. A ray follows an existing edge that lies on the line, crosses the
+//      triangle it enters (splitting that triangle's opposite side where the ray leaves it) when
+//      the pieces pass the guards, or else moves the nearer end of that side onto the line and
+//      follows its edge (move_vertex.h), so the crack stays on the line the physics chose. Each
+//      ray is planned on the mesh as the rays before it left it and carried out at once.
+//   2. Open the cut edges and separate every vertex left with two fans (separate_vertex.h): the
 //      torn vertex itself and any far end already on a border. So a tear that reaches the border
 //      or another tear opens the cloth.
 // Lumped masses are patched for the vertices whose triangles changed; mass and momentum are kept
@@ -31,9 +30,8 @@ namespace weft {
 // Tears the cloth through `vertex` along the line with direction `direction` (material space, the
 // frame of Triangle::rest; need not be unit). `areaDensity` (kg/m^2) is the cloth's, for the
 // lumped masses. Returns false, with the mesh untouched and `outChange` empty, when no valid tear
-// exists: the ray points out of a border vertex's fan, it would run along a border edge, the two
-// rays of an interior vertex would need the same edge or split the same neighbour, or the
-// direction is zero or not finite.
+// exists: every ray points out of the fan, would run along a border edge or cannot keep the guards,
+// or the direction is zero or not finite (an interior vertex needs both of its rays).
 bool tearThroughVertex(ClothMesh& mesh, int vertex, const Vec2& direction, const TearGuards& guards,
                        double areaDensity, TopologyChange& outChange);
 

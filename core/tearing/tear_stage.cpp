@@ -1,12 +1,17 @@
 #include "tearing/tear_stage.h"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
+#include <optional>
+#include <unordered_map>
 
 #include "sim/cloth.h"
 #include "sim/cloth_topology.h"
 #include "tearing/tear_mesh.h"
 #include "tearing/tensile_stress.h"
+#include "tearing/vertex_fan.h"
 
 namespace weft {
 
@@ -18,6 +23,10 @@ namespace {
 // too). A micrometre is far below any contact thickness: the proximity pass then sees two lips
 // in contact with a well-defined normal, as it would after any fold.
 constexpr double kCopySeparation = 1e-6;
+
+// A bound on the work of one step: no cloth tears more often than this in one step, whatever the
+// crack speed (a 64 x 64 sheet torn apart along both diagonals takes about 250).
+constexpr int kMaxTearsPerStep = 4096;
 
 // Moves each copy of a separated vertex (and its original) towards the middle of its own
 // triangles, so the lips of the tear no longer coincide. Velocities are not touched (momentum is
@@ -42,15 +51,38 @@ void nudgeCopiesApart(ClothMesh& mesh, const TopologyChange& change) {
   }
 }
 
+// Rest length of an edge (m), from a triangle that holds it.
+double restLength(const ClothMesh& mesh, int e) {
+  const Edge& edge = mesh.edges[e];
+  const Triangle& t = mesh.tris[edge.tri[0]];
+  return (t.rest[cornerOf(t, edge.v[0])] - t.rest[cornerOf(t, edge.v[1])]).norm();
+}
+
+// How far each crack of this step has run: a tear at a vertex that is not the end of a crack made
+// this step starts a new front (or continues, from an earlier step, a tip with its carried
+// overshoot); a tear at such an end continues it.
+struct CrackFronts {
+  std::unordered_map<int, int> frontAt;  // crack end made this step -> its front
+  std::vector<double> advanced;          // per front: how far each of its tips has run (m)
+
+  int frontOf(int vertex, const std::unordered_map<int, double>& carried) {
+    const auto found = frontAt.find(vertex);
+    if (found != frontAt.end()) return found->second;
+    const auto carry = carried.find(vertex);
+    advanced.push_back(carry != carried.end() ? carry->second : 0.0);
+    return static_cast<int>(advanced.size()) - 1;
+  }
+};
+
 }  // namespace
 
 TearStage::TearStage(const Scene& scene) : spec_(scene.tearing) {
-  search_.lines = spec_.denseLines ? CandidateLines::Dense : CandidateLines::Thesis;
-  search_.denseDirections = spec_.denseDirections;
-  search_.skipByBound = spec_.skipByBound;
-  search_.onlyTheBest = spec_.maxTearsPerStep == 1;
-  selection_.maxTearsPerStep = spec_.maxTearsPerStep;
-  selection_.minSpacing = spec_.minSpacing;
+  searchSettings_.lines = spec_.denseLines ? CandidateLines::Dense : CandidateLines::Thesis;
+  searchSettings_.denseDirections = spec_.denseDirections;
+  searchSettings_.skipByBound = spec_.skipByBound;
+  searchSettings_.branchFromLips = spec_.branchFromLips;
+  relaxation_.rings = spec_.relaxRings;
+  relaxation_.sweeps = spec_.relaxSweeps;
   materialsChanged(scene);
 }
 
@@ -60,63 +92,156 @@ void TearStage::materialsChanged(const Scene& scene) {
   runs_ = scene.stages.tearing && anyTable;
 }
 
-std::vector<TopologyChange> TearStage::run(std::vector<Cloth>& cloths, double time, StageProfile& profile) {
+std::vector<TopologyChange> TearStage::run(std::vector<Cloth>& cloths, double time, double dt, StageProfile& profile) {
   std::vector<TopologyChange> changed(cloths.size());
   if (!runs_) return changed;
+  if (corners_.size() != cloths.size()) corners_.resize(cloths.size());
+  for (std::size_t c = 0; c < cloths.size(); ++c) {
+    if (!cloths[c].material.tearTable) continue;
+    changed[c] = tearCloth(cloths[c], static_cast<int>(c), time, dt, profile);
+  }
+  return changed;
+}
+
+TopologyChange TearStage::tearCloth(Cloth& cloth, int clothIndex, double time, double dt, StageProfile& profile) {
+  TopologyChange changed;
+  const TearTable& table = *cloth.material.tearTable;
   TearGuards guards;
   guards.minEdgeLength = spec_.minEdgeLength;
   guards.minAngleDeg = spec_.minAngleDeg;
   guards.snapAngleDeg = spec_.snapAngleDeg;
-  for (std::size_t c = 0; c < cloths.size(); ++c) {
-    Cloth& cloth = cloths[c];
-    if (!cloth.material.tearTable) continue;
-    if (corners_.size() != cloths.size()) corners_.resize(cloths.size());
-    std::vector<TriangleCorners>& corners = corners_[c];
-    if (corners.size() != cloth.mesh.tris.size()) corners = triangleCorners(cloth.mesh);
-    {
-      StageTimer timer(profile, "tear_stress");
-      tensileStresses(cloth, stress_);
-    }
-    std::vector<TearCandidate> chosen;
+  std::vector<TriangleCorners>& corners = corners_[clothIndex];
+  if (corners.size() != cloth.mesh.tris.size()) corners = triangleCorners(cloth.mesh);
+  if (overshoot_.size() != corners_.size()) overshoot_.resize(corners_.size());
+  {
+    StageTimer timer(profile, "tear_stress");
+    tensileStresses(cloth, stress_);
+  }
+  {
+    StageTimer timer(profile, "tear_search");
+    search_.start(cloth.mesh, corners, stress_, table, cloth.weftAngleRad, searchSettings_, stats_.search);
+  }
+  // A crack tip runs at most this far per step (m); without propagation the stage stops after
+  // maxTearsPerStep tears instead.
+  const double reach = spec_.propagate ? spec_.crackSpeed * dt : std::numeric_limits<double>::infinity();
+  const int maxTears = spec_.propagate ? kMaxTearsPerStep : spec_.maxTearsPerStep;
+  CrackFronts fronts;
+  std::unordered_map<int, double> stillOwed;
+  std::vector<Vec2> started;  // where this step's tears were, for the spacing of new cracks
+  int tears = 0;
+  int crackStarts = 0;
+  for (int pass = 0; pass < 4 * kMaxTearsPerStep && tears < maxTears; ++pass) {
+    std::optional<TearCandidate> best;
     {
       StageTimer timer(profile, "tear_search");
-      findTearCandidates(cloth.mesh, corners, stress_, *cloth.material.tearTable, cloth.weftAngleRad, search_,
-                         candidates_, stats_.search);
-      chosen = selectTears(candidates_, selection_);
+      best = search_.best(cloth.mesh, corners, stress_, stats_.search);
     }
-    if (chosen.empty()) continue;
-    StageTimer timer(profile, "tear_surgery");
-    // The records are taken before any surgery: a tear appends vertices and triangles, and the
-    // fans read here are those the candidates were found in.
-    std::vector<TearRecord> records;
-    for (const TearCandidate& tear : chosen) {
-      TearRecord record;
-      record.time = time;
-      record.cloth = static_cast<int>(c);
-      record.vertex = tear.vertex;
-      record.position = cloth.mesh.x[tear.vertex];
-      record.restPosition = tear.restPosition;
-      record.angleDeg = tear.angle * 180.0 / std::numbers::pi;
-      record.alphaDeg = tear.alphaDeg;
-      record.ray = tear.ray;
-      record.separation = tear.separation;
-      record.required = tear.required;
-      record.ratio = tear.ratio;
-      records.push_back(record);
+    if (!best) break;
+    const int vertex = best->vertex;
+    // A tear that does not continue a crack of this step keeps its distance from this step's
+    // tears: the stress around them is stale until the cloth moves (their neighbours still read
+    // the load the crack took off them), so cracks started beside them would be false.
+    // With propagation, at most tears_per_step new cracks start per step (the thesis' one): a
+    // crack that starts relieves its neighbours only as the cloth moves, so several started at
+    // once along an evenly loaded border would all run, side by side.
+    const bool continues = fronts.frontAt.contains(vertex);
+    const bool starts = !continues && !best->crackTip;
+    if ((starts && spec_.propagate && crackStarts >= spec_.maxTearsPerStep) ||
+        (!continues && std::any_of(started.begin(), started.end(), [&](const Vec2& p) {
+          return (p - best->restPosition).norm() < spec_.minSpacing;
+        }))) {
+      search_.exclude(vertex);
+      continue;
     }
-    for (std::size_t k = 0; k < chosen.size(); ++k) {
-      TopologyChange change;
-      const Vec2 direction(std::cos(chosen[k].angle), std::sin(chosen[k].angle));
-      if (!tearThroughVertex(cloth.mesh, chosen[k].vertex, direction, guards, cloth.material.areaDensity, change)) {
-        ++stats_.refused;
-        continue;
+    const int front = fronts.frontOf(vertex, overshoot_[clothIndex]);
+    if (fronts.advanced[front] >= reach) {
+      if (!continues) stillOwed[vertex] = fronts.advanced[front] - reach;  // a tip still paying off
+      ++stats_.stoppedBySpeed;
+      search_.exclude(vertex);
+      continue;
+    }
+
+    // 2. The surgery: the best line, then the vertex's other lines above 1.
+    std::optional<StageTimer> surgeryTimer(std::in_place, profile, "tear_surgery");
+    const Vec3 position = cloth.mesh.x[vertex];
+    TopologyChange change;
+    std::optional<TearCandidate> torn;
+    auto tryLine = [&](const TearCandidate& line) {
+      if (tearThroughVertex(cloth.mesh, vertex, Vec2(std::cos(line.angle), std::sin(line.angle)), guards,
+                            cloth.material.areaDensity, change)) {
+        torn = line;
+        return true;
       }
-      applyTopologyChange(cloth, change);
-      updateTriangleCorners(cloth.mesh, change.changedTriangles, corners);
-      nudgeCopiesApart(cloth.mesh, change);
-      accumulateTopologyChange(changed[c], change);
-      ++stats_.tears;
-      log_.push_back(records[k]);
+      ++stats_.refused;
+      return false;
+    };
+    if (!tryLine(*best)) {
+      for (const TearCandidate& line : search_.linesAt(cloth.mesh, corners, stress_, vertex)) {
+        if (std::abs(line.angle - best->angle) < 1e-12) continue;
+        if (tryLine(line)) break;
+      }
+    }
+    if (!torn) {
+      surgeryTimer.reset();
+      search_.exclude(vertex);
+      continue;
+    }
+    applyTopologyChange(cloth, change);
+    updateTriangleCorners(cloth.mesh, change.changedTriangles, corners);
+    nudgeCopiesApart(cloth.mesh, change);
+    accumulateTopologyChange(changed, change);
+    ++stats_.tears;
+    ++tears;
+    if (starts) ++crackStarts;
+    started.push_back(torn->restPosition);
+
+    TearRecord record;
+    record.time = time;
+    record.cloth = clothIndex;
+    record.vertex = vertex;
+    record.position = position;
+    record.restPosition = torn->restPosition;
+    record.angleDeg = torn->angle * 180.0 / std::numbers::pi;
+    record.alphaDeg = torn->alphaDeg;
+    record.ray = torn->ray;
+    record.separation = torn->separation;
+    record.required = torn->required;
+    record.ratio = torn->ratio;
+    log_.push_back(record);
+
+    // Each tip of the crack advanced by its share of the torn length (an interior tear opens two).
+    double tornLength = 0.0;
+    for (int e : change.tornEdges) tornLength += 0.5 * restLength(cloth.mesh, e);
+    fronts.advanced[front] += tornLength / std::max<std::size_t>(1, change.crackEnds.size());
+    for (int end : change.crackEnds) fronts.frontAt[end] = front;
+    surgeryTimer.reset();
+
+    // 3. The stress after the tear: the changed triangles at the current positions, then (with
+    // propagation) the patch around the crack ends relaxed.
+    std::vector<int> restressed = change.changedTriangles;
+    {
+      StageTimer timer(profile, "tear_relax");
+      tensileStresses(cloth, change.changedTriangles, stress_);
+      if (spec_.propagate) {
+        std::vector<int> ends = change.crackEnds;
+        ends.push_back(vertex);
+        const std::vector<int> patch = relaxAroundCrack(cloth, ends, relaxation_, stress_);
+        restressed.insert(restressed.end(), patch.begin(), patch.end());
+      }
+    }
+    StageTimer timer(profile, "tear_search");
+    std::vector<int> vertices = change.massChangedVertices;
+    vertices.insert(vertices.end(), change.crackEnds.begin(), change.crackEnds.end());
+    vertices.push_back(vertex);
+    search_.refresh(cloth.mesh, corners, stress_, restressed, vertices, stats_.search);
+  }
+  // A tip that ran past its reach (a tear opens a whole edge) owes the excess to the next step, so
+  // that on average no tip runs faster than crack_speed, whatever the element size.
+  std::unordered_map<int, double>& owed = overshoot_[clothIndex];
+  owed = std::move(stillOwed);
+  if (spec_.propagate) {
+    for (const auto& [end, front] : fronts.frontAt) {
+      if (fronts.advanced[front] > reach) owed[end] = fronts.advanced[front] - reach;
     }
   }
   return changed;

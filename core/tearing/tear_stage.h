@@ -1,16 +1,28 @@
 #pragma once
 // The tearing stage of a step (thesis §3.5, after collision response): for each cloth with a tear
-// table, the tensile stress of its triangles at the end of the step, the best fracture line of
-// each vertex, the selection, and the mesh surgery, with every cache of the cloth updated locally.
-// The integrators and the contact stage are told by the world, with what changed, and patch what
-// depends on the topology.
+// table, the tensile stress of its triangles at the end of the step, then, while some vertex has a
+// line with omega > 1:
+//   1. search: the best line (tear_search.h), among the vertices not yet refused this step;
+//   2. surgery: tear along it (tear_mesh.h); when the mesh refuses, the vertex's next best line,
+//      then the next vertex (no stall: a refused line never stops the cloth from tearing);
+//   3. relax (with `propagate`): the stress around the new crack ends relaxed locally
+//      (crack_relaxation.h), so the next search sees the stress the crack shed onto its tip.
+// A crack therefore grows as far within a step as its tip's omega stays above 1, up to
+// crack_speed * dt per tip: its speed is a material length per second, not one element per step,
+// so crack growth does not depend on the mesh's resolution. Without `propagate` the stage tears
+// the thesis' way: up to tears_per_step lines per step from one stress evaluation, the next step's
+// dynamics relaxing the rest (its §3.2).
+// Every cache of the cloth is updated locally; the integrators and the contact stage are told by
+// the world, with what changed, and patch what depends on the topology.
+#include <unordered_map>
 #include <vector>
 
 #include "mesh/topology_change.h"
 #include "scene/scene.h"
 #include "sim/stage_profile.h"
+#include "tearing/crack_relaxation.h"
 #include "tearing/tear_candidates.h"
-#include "tearing/tear_selection.h"
+#include "tearing/tear_search.h"
 #include "util/types.h"
 
 namespace weft {
@@ -34,7 +46,8 @@ struct TearRecord {
 
 struct TearStats {
   long long tears = 0;
-  long long refused = 0;     // selected lines the mesh guards refused (the cloth stays whole there)
+  long long refused = 0;     // lines the mesh guards refused (the next line or vertex was tried)
+  long long stoppedBySpeed = 0;  // crack tips that could have run on but reached crack_speed * dt
   TearSearchCounts search;
 };
 
@@ -46,20 +59,25 @@ class TearStage {
   void materialsChanged(const Scene& scene);
   // The scene has a cloth with a tear table and tearing is on.
   bool runs() const { return runs_; }
-  // Tears what must tear; returns, per cloth, what all its tears of this step changed together
-  // (empty when it did not tear).
-  std::vector<TopologyChange> run(std::vector<Cloth>& cloths, double time, StageProfile& profile);
+  // Tears what must tear in a step of length dt ending at `time`; returns, per cloth, what all its
+  // tears of this step changed together (empty when it did not tear).
+  std::vector<TopologyChange> run(std::vector<Cloth>& cloths, double time, double dt, StageProfile& profile);
   const std::vector<TearRecord>& log() const { return log_; }
   const TearStats& stats() const { return stats_; }
 
  private:
+  // One cloth's step; returns what it changed.
+  TopologyChange tearCloth(Cloth& cloth, int clothIndex, double time, double dt, StageProfile& profile);
+
   TearingSpec spec_;
-  TearSearchSettings search_;
-  TearSelectionSettings selection_;
+  TearSearchSettings searchSettings_;
+  CrackRelaxationSettings relaxation_;
   bool runs_ = false;
   std::vector<Mat2> stress_;
   std::vector<std::vector<TriangleCorners>> corners_;  // per cloth, patched after each tear
-  std::vector<TearCandidate> candidates_;
+  TearSearch search_;
+  std::vector<std::unordered_map<int, double>> overshoot_;  // per cloth: crack tip -> metres run past its
+                                                            // last step's reach, owed to the next
   std::vector<TearRecord> log_;
   TearStats stats_;
 };

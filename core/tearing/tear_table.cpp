@@ -32,7 +32,7 @@ double weakestStrength(const TearTable& table) {
 }
 
 TearTable parseTearTable(const nlohmann::json& j, const std::string& file, const std::string& path) {
-  const FieldReader r(j, path, file, {"name", "source", "directions_deg", "strength", "unit_n_per_m"});
+  const FieldReader r(j, path, file, {"name", "source", "directions_deg", "strength", "unit_n_per_m", "propagation_factor"});
   TearTable table;
   if (r.has("name")) table.name = r.requiredString("name", "the tear table's name");
   if (r.has("source")) table.source = r.requiredString("source", "where the numbers come from");
@@ -46,6 +46,11 @@ TearTable parseTearTable(const nlohmann::json& j, const std::string& file, const
                                            "a required separation strength"));
   }
   table.unitNPerM = r.number("unit_n_per_m", 1.0, Bound::Positive, "the newtons per metre of one table unit");
+  table.propagationFactor = r.number("propagation_factor", 1.0, Bound::UnitInterval,
+                                     "the share of the table's strength a crack tip needs to run on");
+  if (!(table.propagationFactor > 0.0)) {
+    r.fail(r.pointer("propagation_factor"), "must be above 0 (a crack tip needs some strength to run on)");
+  }
   // The directions are implied (evenly spaced from 0); when written out they must say the same.
   if (r.has("directions_deg")) {
     const nlohmann::json& directions = r.array("directions_deg");
@@ -75,6 +80,7 @@ nlohmann::json tearTableToJson(const TearTable& table) {
   out["directions_deg"] = directions;
   out["strength"] = table.strength;
   out["unit_n_per_m"] = table.unitNPerM;
+  if (table.propagationFactor != 1.0) out["propagation_factor"] = table.propagationFactor;
   return out;
 }
 

@@ -24,6 +24,12 @@ struct TearTable {
   std::string source;             // where the numbers come from
   std::vector<double> strength;   // table units, at alpha = k * 180 / N degrees; all > 0
   double unitNPerM = 1.0;         // N/m per table unit
+  // Initiation against propagation: a crack tip (a vertex on a torn or cut edge) needs only this
+  // share of the table's strength to run on. Woven fabrics start a tear at their tensile strength
+  // but propagate it at their much lower tear strength (the gap between a grab test, ASTM D5034,
+  // and a tongue tear test, ASTM D2261): a notch runs where an intact sheet holds. In (0, 1];
+  // 1 (the default) tears tips and intact cloth alike, as the thesis does.
+  double propagationFactor = 1.0;
 
   friend bool operator==(const TearTable&, const TearTable&) = default;
 };

@@ -32,19 +32,32 @@ Mat2 stressInMaterialFrame(const Vec3& stressUV, double weftAngleRad) {
   return R * S * R.transpose();
 }
 
-void tensileStresses(const Cloth& cloth, std::vector<Mat2>& outStress) {
+namespace {
+
+Mat2 tensileStressOf(const Cloth& cloth, const PreparedElasticity& law, int t, MembraneContribution& contribution) {
   const ClothMesh& mesh = cloth.mesh;
+  const MembraneElement& element = cloth.membranes[t];
+  evaluateMembrane(element, law, mesh.x[element.v[0]], mesh.x[element.v[1]], mesh.x[element.v[2]], HessianMode::None,
+                   contribution);
+  const Mat2 stress = stressInMaterialFrame(contribution.stress, cloth.weftAngleRad);
+  // A non-finite stress (a blown-up step) must not tear: it is treated as no stress.
+  return stress.allFinite() ? tensilePart(stress) : Mat2::Zero();
+}
+
+}  // namespace
+
+void tensileStresses(const Cloth& cloth, std::vector<Mat2>& outStress) {
   const PreparedElasticity law = prepareElasticity(cloth.material.elasticity);
-  outStress.resize(mesh.tris.size());
+  outStress.resize(cloth.mesh.tris.size());
   MembraneContribution contribution;
-  for (std::size_t t = 0; t < mesh.tris.size(); ++t) {
-    const MembraneElement& element = cloth.membranes[t];
-    evaluateMembrane(element, law, mesh.x[element.v[0]], mesh.x[element.v[1]], mesh.x[element.v[2]], HessianMode::None,
-                     contribution);
-    const Mat2 stress = stressInMaterialFrame(contribution.stress, cloth.weftAngleRad);
-    // A non-finite stress (a blown-up step) must not tear: it is treated as no stress.
-    outStress[t] = stress.allFinite() ? tensilePart(stress) : Mat2::Zero();
-  }
+  for (int t = 0; t < cloth.mesh.triangleCount(); ++t) outStress[t] = tensileStressOf(cloth, law, t, contribution);
+}
+
+void tensileStresses(const Cloth& cloth, const std::vector<int>& triangles, std::vector<Mat2>& ioStress) {
+  const PreparedElasticity law = prepareElasticity(cloth.material.elasticity);
+  ioStress.resize(cloth.mesh.tris.size(), Mat2::Zero());
+  MembraneContribution contribution;
+  for (int t : triangles) ioStress[t] = tensileStressOf(cloth, law, t, contribution);
 }
 
 }  // namespace weft

@@ -21,5 +21,8 @@ Mat2 stressInMaterialFrame(const Vec3& stressUV, double weftAngleRad);
 
 // sigma+ of every triangle of the cloth at its current positions (N/m), in the material frame.
 void tensileStresses(const Cloth& cloth, std::vector<Mat2>& outStress);
+// The same for the listed triangles only (after a tear changed them); `ioStress` grows to the
+// mesh's triangle count.
+void tensileStresses(const Cloth& cloth, const std::vector<int>& triangles, std::vector<Mat2>& ioStress);
 
 }  // namespace weft

@@ -181,20 +181,86 @@ TEST(TearMesh, ADirectionWithinTheSnapAngleFollowsTheEdge) {
   EXPECT_TRUE(valid(mesh));
 }
 
-TEST(TearMesh, ACrossingThatWouldMakeASliverFollowsTheEdge) {
+// Every torn edge of the mesh lies on the line through `centre` along `direction` (material space).
+void expectTornEdgesOnTheLine(const ClothMesh& mesh, const Vec2& centre, const Vec2& direction) {
+  int torn = 0;
+  for (const Edge& e : mesh.edges) {
+    if (!e.torn) continue;
+    ++torn;
+    const Triangle& t = mesh.tris[e.tri[0]];
+    for (int v : e.v) EXPECT_NEAR(cross2(direction.normalized(), t.rest[cornerOf(t, v)] - centre), 0.0, 1e-12);
+  }
+  EXPECT_GT(torn, 0);
+}
+
+// A crossing that would make a sliver moves the end of the entered triangle's opposite side onto
+// the line and follows its edge: the crack stays on the line, with no split point and no sliver.
+TEST(TearMesh, ACrossingThatWouldMakeASliverMovesTheNearerVertexOntoTheLine) {
   TearGuards guards;
   guards.snapAngleDeg = 0.0;
-  guards.minAngleDeg = 20.0;  // 17 degrees at the vertex is too thin
+  guards.minAngleDeg = 20.0;  // 17 degrees at the vertex is too thin to cross
   ClothMesh mesh = grid(5);
   TopologyChange change;
   ASSERT_TRUE(tearThroughVertex(mesh, 12, atDegrees(17), guards, kDensity, change));
-  EXPECT_EQ(change.newVertices.size(), 1u);
+  EXPECT_EQ(change.newVertices.size(), 1u);  // only the copy
+  EXPECT_EQ(change.movedVertices.size(), 2u);  // one end for each ray
+  expectTornEdgesOnTheLine(mesh, Vec2(0.5, 0.5), atDegrees(17));
+  for (const Triangle& t : mesh.tris) EXPECT_GE(smallestRestAngle(t), degToRad(20.0) * (1 - 1e-12));
+  EXPECT_TRUE(valid(mesh));
 
   guards.minAngleDeg = 1.0;
   guards.minEdgeLength = 0.1;  // the split point would be 0.08 m from a grid vertex: too close
   mesh = grid(5);
   ASSERT_TRUE(tearThroughVertex(mesh, 12, atDegrees(17), guards, kDensity, change));
   EXPECT_EQ(change.newVertices.size(), 1u);
+  expectTornEdgesOnTheLine(mesh, Vec2(0.5, 0.5), atDegrees(17));
+  EXPECT_TRUE(valid(mesh));
+}
+
+// A move keeps what a split keeps: mass, momentum and the rest area exactly, lumped masses as a
+// fresh assignment gives them, and the deformation: on a cloth deformed by an affine map the moved
+// vertex lands where the map takes its new material point (so no strain appears).
+TEST(TearMesh, AMoveKeepsMassMomentumRestAreaAndTheDeformation) {
+  Mat3 map;
+  map << 1.3, 0.2, 0.0, -0.1, 0.9, 0.0, 0.4, 0.3, 1.0;
+  const Vec3 shift(0.2, -0.5, 1.0);
+  for (const double deg : {3.0, 8.0, 12.0, 38.0, 85.0}) {
+    ClothMesh mesh = grid(6, 11);
+    for (const Triangle& t : mesh.tris) {
+      for (int k = 0; k < 3; ++k) mesh.x[t.v[k]] = map * Vec3(t.rest[k].x(), t.rest[k].y(), 0.0) + shift;
+    }
+    const double mass = test::totalMass(mesh);
+    const Vec3 momentum = test::totalMomentum(mesh);
+    const double area = test::totalRestArea(mesh);
+    TopologyChange change;
+    ASSERT_TRUE(tearThroughVertex(mesh, 14, atDegrees(deg), TearGuards{}, kDensity, change)) << deg;
+    EXPECT_FALSE(change.movedVertices.empty()) << deg << " degrees: a move was expected";
+    EXPECT_NEAR(test::totalMass(mesh), mass, 1e-12 * mass);
+    EXPECT_LE((test::totalMomentum(mesh) - momentum).norm(), 1e-12 * test::momentumScale(mesh));
+    EXPECT_NEAR(test::totalRestArea(mesh), area, 1e-12 * area);
+    ClothMesh reassigned = mesh;
+    assignLumpedMasses(reassigned, kDensity);
+    for (int i = 0; i < mesh.vertexCount(); ++i) EXPECT_NEAR(mesh.mass[i], reassigned.mass[i], 1e-15) << i;
+    for (int v : change.movedVertices) {
+      const Triangle& t = mesh.tris[findTriangleAt(mesh, v)];
+      const Vec2 rest = t.rest[cornerOf(t, v)];
+      EXPECT_LE((mesh.x[v] - (map * Vec3(rest.x(), rest.y(), 0.0) + shift)).norm(), 1e-6) << deg;  // 1e-6: the nudge
+    }
+    EXPECT_TRUE(valid(mesh));
+  }
+}
+
+// Pinned vertices never move: a ray whose only ways are a sliver or a move of a pinned vertex
+// follows the nearer edge within the snap angle, and is refused beyond it.
+TEST(TearMesh, PinnedVerticesAreNotMovedAndTheRayFollowsWithinTheSnapAngleOrIsRefused) {
+  ClothMesh mesh = grid(5);
+  for (int v = 0; v < mesh.vertexCount(); ++v) mesh.pinned[v] = v != 12;
+  const ClothMesh before = mesh;
+  TopologyChange change;
+  EXPECT_FALSE(tearThroughVertex(mesh, 12, atDegrees(9), TearGuards{}, kDensity, change));
+  test::expectSameMesh(mesh, before);
+  ASSERT_TRUE(tearThroughVertex(mesh, 12, atDegrees(4), TearGuards{}, kDensity, change));
+  EXPECT_TRUE(change.movedVertices.empty());
   EXPECT_TRUE(valid(mesh));
 }
 

@@ -16,6 +16,7 @@
 #include "scene/scene_json.h"
 #include "sim/world.h"
 #include "support/contact_checks.h"
+#include "support/tear_scenes.h"
 #include "support/test_scenes.h"
 #include "tearing/tear_stage.h"
 
@@ -24,39 +25,9 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-TearTable table(std::vector<double> strength, double unit) {
-  TearTable t;
-  t.strength = std::move(strength);
-  t.unitNPerM = unit;
-  return t;
-}
+using test::biaxialSheet;
 
-PinGroup edgePins(Vec2 lo, Vec2 hi, const Vec3& pull, double seconds) {
-  PinGroup group;
-  group.restBox = std::pair(lo, hi);
-  group.script = {{0.0, Vec3::Zero()}, {seconds, pull}};
-  return group;
-}
-
-// A 1 m sheet held along its four edges (corners free), each edge pulled outward by `pull` metres
-// over `seconds`: a (nearly) equal load in all directions in the middle of the sheet. No gravity.
-Scene biaxialSheet(int resolution, const TearTable& tears, double weftDeg, bool dense, double pull = 0.12,
-                   double seconds = 1.0) {
-  Scene scene = test::hangingSheet(test::isotropicMaterial(2000.0, 0.3, 1e-5), resolution, 1.0 / 240);
-  ClothSpec& cloth = scene.cloths[0];
-  cloth.material.tearTable = tears;
-  cloth.weftAngleDeg = weftDeg;
-  const double e = 0.5 / (resolution - 1);  // half a cell
-  const double in = 1.5 / (resolution - 1);  // keeps the corners free
-  cloth.pins = {edgePins({-e, in}, {e, 1.0 - in}, {-pull, 0, 0}, seconds),
-                edgePins({1.0 - e, in}, {1.0 + e, 1.0 - in}, {pull, 0, 0}, seconds),
-                edgePins({in, -e}, {1.0 - in, e}, {0, -pull, 0}, seconds),
-                edgePins({in, 1.0 - e}, {1.0 - in, 1.0 + e}, {0, pull, 0}, seconds)};
-  scene.forces.gravity = Vec3::Zero();
-  scene.forces.damping.mass = 0.5;
-  scene.tearing.denseLines = dense;
-  return scene;
-}
+TearTable table(std::vector<double> strength, double unit) { return test::tearTable(std::move(strength), unit); }
 
 // The same sheet with each edge pulled by a different amount: no two vertices are symmetric, so
 // no two candidates tie (a tie is decided by rounding, which any change of frame changes).
@@ -118,7 +89,7 @@ double largestSeparation(Cloth cloth) {
   TearStage stage(scene);
   std::vector<Cloth> cloths{cloth};
   StageProfile profile;
-  stage.run(cloths, 0.0, profile);
+  stage.run(cloths, 0.0, 1.0 / 240, profile);
   return stage.log().empty() ? 0.0 : stage.log().front().separation;
 }
 
@@ -156,7 +127,7 @@ TEST(Tearing, APrestressedSheetMovedRigidlyNeverTears) {
     TearStage stage(tearing);
     std::vector<Cloth> cloths{moved};
     StageProfile profile;
-    stage.run(cloths, 0.0, profile);
+    stage.run(cloths, 0.0, 1.0 / 240, profile);
     EXPECT_EQ(stage.stats().tears, 0) << "motion " << k;
   }
 }

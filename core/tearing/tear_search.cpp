@@ -1,0 +1,173 @@
+#include "tearing/tear_search.h"
+
+#include <algorithm>
+#include <span>
+#include <utility>
+
+#include "tearing/vertex_fan.h"
+
+namespace weft {
+namespace {
+
+bool holds(const ClothMesh& mesh, int triangle, int vertex) {
+  return triangle != kNone && triangle < mesh.triangleCount() && cornerOf(mesh.tris[triangle], vertex) != kNone;
+}
+
+// Where a vertex stands on the cracks of the cloth. A crack's tip is where a slit ends: its two
+// bounding border edges are the two lips of one opened edge, so their far ends are the same
+// material point. A lip is any other vertex on a torn or cut edge (its fan is bounded by the
+// crack's flank).
+CrackPlace crackPlaceOf(const ClothMesh& mesh, const VertexFan& fan) {
+  if (fan.closed || fan.triangles.empty()) return CrackPlace::None;
+  const Triangle& first = mesh.tris[fan.triangles.front()];
+  const Triangle& last = mesh.tris[fan.triangles.back()];
+  const Edge& clockwise = mesh.edges[first.edge[fan.corners.front()]];
+  const Edge& counterClockwise = mesh.edges[last.edge[(fan.corners.back() + 2) % 3]];
+  const bool onCrack = clockwise.torn || clockwise.cut || counterClockwise.torn || counterClockwise.cut;
+  if (!onCrack) return CrackPlace::None;
+  const Vec2 clockwiseEnd = first.rest[(fan.corners.front() + 1) % 3];
+  const Vec2 counterClockwiseEnd = last.rest[(fan.corners.back() + 2) % 3];
+  const bool slit = (clockwise.torn || clockwise.cut) && (counterClockwise.torn || counterClockwise.cut) &&
+                    (clockwiseEnd - counterClockwiseEnd).norm() <= 1e-9;
+  return slit ? CrackPlace::Tip : CrackPlace::Lip;
+}
+
+}  // namespace
+
+void TearSearch::start(const ClothMesh& mesh, const std::vector<TriangleCorners>& corners,
+                       const std::vector<Mat2>& stress, const TearTable& table, double weftAngleRad,
+                       const TearSearchSettings& settings, TearSearchCounts& counts) {
+  table_ = &table;
+  weftAngleRad_ = weftAngleRad;
+  settings_ = settings;
+  const int n = mesh.vertexCount();
+  triangleAt_.assign(n, kNone);
+  rowStart_.assign(n + 1, 0);
+  for (int t = 0; t < mesh.triangleCount(); ++t) {
+    for (int v : mesh.tris[t].v) {
+      triangleAt_[v] = t;
+      ++rowStart_[v + 1];
+    }
+  }
+  for (int v = 0; v < n; ++v) rowStart_[v + 1] += rowStart_[v];
+  around_.resize(rowStart_[n]);
+  std::vector<int> fill(rowStart_.begin(), rowStart_.end() - 1);
+  for (int t = 0; t < mesh.triangleCount(); ++t) {
+    for (int v : mesh.tris[t].v) around_[fill[v]++] = t;
+  }
+  walked_.assign(n, 0);
+  bound_.assign(n, 0.0);
+  best_.assign(n, TearCandidate{});
+  evaluated_.assign(n, 0);
+  excluded_.assign(n, 0);
+  for (int v = 0; v < n; ++v) lookAt(mesh, corners, stress, v, counts);
+}
+
+void TearSearch::refresh(const ClothMesh& mesh, const std::vector<TriangleCorners>& corners,
+                         const std::vector<Mat2>& stress, const std::vector<int>& triangles,
+                         const std::vector<int>& extraVertices, TearSearchCounts& counts) {
+  const std::size_t n = static_cast<std::size_t>(mesh.vertexCount());
+  triangleAt_.resize(n, kNone);
+  bound_.resize(n, 0.0);
+  best_.resize(n);
+  evaluated_.resize(n, 0);
+  excluded_.resize(n, 0);
+  walked_.resize(n, 1);
+  std::vector<int> vertices(extraVertices);
+  for (int t : triangles) {
+    for (int v : mesh.tris[t].v) {
+      triangleAt_[v] = t;
+      vertices.push_back(v);
+    }
+  }
+  std::sort(vertices.begin(), vertices.end());
+  vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+  for (int v : vertices) {
+    walked_[v] = 1;
+    lookAt(mesh, corners, stress, v, counts);
+  }
+}
+
+void TearSearch::exclude(int vertex) {
+  if (vertex >= 0 && vertex < static_cast<int>(excluded_.size())) excluded_[vertex] = 1;
+}
+
+CrackPlace TearSearch::fanOf(const ClothMesh& mesh, const std::vector<TriangleCorners>& corners,
+                       const std::vector<Mat2>& stress, int vertex, StressFan& fan) const {
+  if (!walked_[vertex]) {
+    const std::span<const int> triangles(around_.data() + rowStart_[vertex], around_.data() + rowStart_[vertex + 1]);
+    stressFan(mesh, vertex, triangles, corners, stress, fan);
+    // Only a vertex on a border can be on a crack: walk those (few) fans to look at their edges.
+    return fan.closed ? CrackPlace::None : crackPlaceOf(mesh, walkFan(mesh, vertex, triangleAt_[vertex]));
+  }
+  const VertexFan walked = walkFan(mesh, vertex, triangleAt_[vertex]);
+  stressFan(mesh, vertex, std::span<const int>(walked.triangles), corners, stress, fan);
+  return crackPlaceOf(mesh, walked);
+}
+
+void TearSearch::lookAt(const ClothMesh& mesh, const std::vector<TriangleCorners>& corners,
+                        const std::vector<Mat2>& stress, int vertex, TearSearchCounts& counts) {
+  evaluated_[vertex] = 0;
+  bound_[vertex] = 0.0;
+  if (!holds(mesh, triangleAt_[vertex], vertex)) {
+    // A separated vertex's triangle may have gone to its copy: find one it still holds.
+    triangleAt_[vertex] = findTriangleAt(mesh, vertex);
+    if (triangleAt_[vertex] == kNone) return;
+  }
+  ++counts.vertices;
+  const CrackPlace place = fanOf(mesh, corners, stress, vertex, fan_);
+  if (place == CrackPlace::Lip && !settings_.branchFromLips) return;  // cracks grow at their tips
+  const double scale = place == CrackPlace::Tip ? table_->propagationFactor : 1.0;
+  // The margin covers the rounding of the bound itself, so the skip never changes a result.
+  bound_[vertex] = settings_.skipByBound
+                       ? separationStrengthBound(fan_) * (1.0 + 1e-9) / (scale * weakestStrength(*table_))
+                       : std::numeric_limits<double>::infinity();
+  if (bound_[vertex] < 1.0) ++counts.skipped;
+}
+
+TearCandidate TearSearch::candidateAt(const ClothMesh& mesh, int vertex, const StressFan& fan, CrackPlace place,
+                                      TearCandidate line) const {
+  line.vertex = vertex;
+  line.crackTip = place == CrackPlace::Tip;
+  const Triangle& t = mesh.tris[triangleAt_[vertex]];
+  line.restPosition = t.rest[cornerOf(t, vertex)];
+  line.ray = !fan.closed;
+  return line;
+}
+
+std::optional<TearCandidate> TearSearch::best(const ClothMesh& mesh, const std::vector<TriangleCorners>& corners,
+                                              const std::vector<Mat2>& stress, TearSearchCounts& counts) {
+  std::vector<std::pair<double, int>> open;  // (bound, vertex)
+  for (int v = 0; v < static_cast<int>(bound_.size()); ++v) {
+    if (bound_[v] >= 1.0 && !excluded_[v]) open.emplace_back(bound_[v], v);
+  }
+  std::sort(open.begin(), open.end(), [](const auto& a, const auto& b) {
+    return a.first != b.first ? a.first > b.first : a.second < b.second;
+  });
+  TearCandidate winner;
+  for (const auto& [bound, v] : open) {
+    if (bound < winner.ratio) break;  // no vertex left can beat it (ties are still evaluated)
+    if (!evaluated_[v]) {
+      const CrackPlace place = fanOf(mesh, corners, stress, v, fan_);
+      best_[v] = candidateAt(mesh, v, fan_, place,
+                             bestLineAt(fan_, *table_, weftAngleRad_, settings_,
+                                        place == CrackPlace::Tip ? table_->propagationFactor : 1.0, counts));
+      evaluated_[v] = 1;
+    }
+    const TearCandidate& line = best_[v];
+    if (line.ratio > winner.ratio || (line.ratio == winner.ratio && line.vertex < winner.vertex)) winner = line;
+  }
+  if (!(winner.ratio > 1.0)) return std::nullopt;
+  return winner;
+}
+
+std::vector<TearCandidate> TearSearch::linesAt(const ClothMesh& mesh, const std::vector<TriangleCorners>& corners,
+                                               const std::vector<Mat2>& stress, int vertex) {
+  const CrackPlace place = fanOf(mesh, corners, stress, vertex, fan_);
+  std::vector<TearCandidate> lines =
+      linesAboveOneAt(fan_, *table_, weftAngleRad_, settings_, place == CrackPlace::Tip ? table_->propagationFactor : 1.0);
+  for (TearCandidate& line : lines) line = candidateAt(mesh, vertex, fan_, place, line);
+  return lines;
+}
+
+}  // namespace weft

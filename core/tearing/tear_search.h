@@ -1,0 +1,75 @@
+#pragma once
+// The candidate search of one cloth within one step, kept up to date across the step's tears.
+//
+// A step may tear many times (a crack runs on while its tip's omega stays above 1), and each tear
+// changes the stress only around the crack. So the search is kept: every vertex's bound on omega
+// (separation_strength.h) is computed once per step, then only the vertices around a tear are
+// looked at again; the best line is found by branch and bound over the bounds (a vertex whose
+// bound cannot beat the best line found is never evaluated), and an evaluated vertex's best line
+// is kept until its stress changes. The result is the line findTearCandidates would choose, found
+// at the cost of the vertices near the crack.
+//
+// Cracks grow at their tips: a crack tip (where a slit ends) needs only the table's propagation
+// factor times its strength (tear_table.h); a vertex on a crack's flank (a lip) starts no new crack
+// unless branching is asked for (TearSearchSettings::branchFromLips). Right after a crack opens,
+// its lips still carry the stress the crack released until the cloth has moved: read as a fresh
+// load, it would start cracks beside and across the first one at every step (measured: a uniaxial
+// pull then shreds the sheet into strips one element wide).
+#include <optional>
+#include <vector>
+
+#include "mesh/cloth_mesh.h"
+#include "tearing/separation_strength.h"
+#include "tearing/tear_candidates.h"
+#include "tearing/tear_table.h"
+
+namespace weft {
+
+// Where a vertex stands on the cloth's cracks.
+enum class CrackPlace { None, Tip, Lip };
+
+class TearSearch {
+ public:
+  // Every vertex looked at afresh (the start of a step).
+  void start(const ClothMesh& mesh, const std::vector<TriangleCorners>& corners, const std::vector<Mat2>& stress,
+             const TearTable& table, double weftAngleRad, const TearSearchSettings& settings, TearSearchCounts& counts);
+  // The vertices of these triangles (changed by a tear, or with a new stress), and `vertices`
+  // (those whose fans a tear opened without changing a triangle), looked at again; new vertices
+  // are added. `corners` and `stress` must already be up to date for them.
+  void refresh(const ClothMesh& mesh, const std::vector<TriangleCorners>& corners, const std::vector<Mat2>& stress,
+               const std::vector<int>& triangles, const std::vector<int>& vertices, TearSearchCounts& counts);
+  // The best line with omega > 1 among the vertices not excluded (ties to the lower vertex id).
+  std::optional<TearCandidate> best(const ClothMesh& mesh, const std::vector<TriangleCorners>& corners,
+                                    const std::vector<Mat2>& stress, TearSearchCounts& counts);
+  // Every line with omega > 1 at a vertex, best first (the fallbacks when the best is refused).
+  std::vector<TearCandidate> linesAt(const ClothMesh& mesh, const std::vector<TriangleCorners>& corners,
+                                     const std::vector<Mat2>& stress, int vertex);
+  // The vertex is not offered again this step (every line at it was refused, or its crack has
+  // run as far as it may this step).
+  void exclude(int vertex);
+
+ private:
+  void lookAt(const ClothMesh& mesh, const std::vector<TriangleCorners>& corners, const std::vector<Mat2>& stress,
+              int vertex, TearSearchCounts& counts);
+  CrackPlace fanOf(const ClothMesh& mesh, const std::vector<TriangleCorners>& corners, const std::vector<Mat2>& stress,
+             int vertex, StressFan& fan) const;
+  double strengthScaleAt(const ClothMesh& mesh, int vertex, const StressFan& fan) const;
+  TearCandidate candidateAt(const ClothMesh& mesh, int vertex, const StressFan& fan, CrackPlace place,
+                            TearCandidate line) const;
+
+  const TearTable* table_ = nullptr;
+  double weftAngleRad_ = 0.0;
+  TearSearchSettings settings_;
+  std::vector<int> triangleAt_;          // per vertex: a triangle that holds it (kNone: none)
+  // The triangles around each vertex as the step began, in compressed rows (one pass over the
+  // triangles, not a fan walk per vertex); a vertex a tear touched is `walked_` instead.
+  std::vector<int> rowStart_, around_;
+  std::vector<char> walked_;
+  std::vector<double> bound_;            // per vertex: bound on its best omega (0: cannot tear)
+  std::vector<TearCandidate> best_;      // per vertex: its best line, valid when evaluated_
+  std::vector<char> evaluated_;
+  std::vector<char> excluded_;
+  StressFan fan_;                        // reused
+};
+
+}  // namespace weft

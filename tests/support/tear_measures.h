@@ -1,0 +1,112 @@
+#pragma once
+// Where a cloth tore, measured in material space: how much of the torn length follows a direction,
+// and the cracks as whole lines (the "direction" goal is stated in these terms).
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numeric>
+#include <vector>
+
+#include "mesh/cloth_mesh.h"
+#include "tearing/vertex_fan.h"
+#include "util/types.h"
+
+namespace weft::test {
+
+// Axial difference of two line directions (degrees, lines have no sense): in [0, 90].
+inline double lineAngleBetweenDeg(double a, double b) {
+  const double d = std::fmod(std::abs(a - b), 180.0);
+  return std::min(d, 180.0 - d);
+}
+
+// One torn edge, counted once (both lips of a crack carry the same material segment).
+struct TornSegment {
+  Vec2 a = Vec2::Zero(), b = Vec2::Zero();  // material space (m)
+  double length() const { return (b - a).norm(); }
+  double directionDeg() const {
+    double deg = std::atan2(b.y() - a.y(), b.x() - a.x()) * 180.0 / kPi;
+    return deg < 0.0 ? deg + 180.0 : deg;
+  }
+};
+
+inline std::vector<TornSegment> tornSegments(const ClothMesh& mesh) {
+  std::vector<TornSegment> segments;
+  for (const Edge& e : mesh.edges) {
+    if (!(e.torn || e.cut) || e.tri[0] == kNone) continue;
+    const Triangle& t = mesh.tris[e.tri[0]];
+    TornSegment s{t.rest[cornerOf(t, e.v[0])], t.rest[cornerOf(t, e.v[1])]};
+    if (s.b.x() < s.a.x() || (s.b.x() == s.a.x() && s.b.y() < s.a.y())) std::swap(s.a, s.b);
+    segments.push_back(s);
+  }
+  // Each torn edge has a twin on the other lip with the same material segment: keep one.
+  std::sort(segments.begin(), segments.end(), [](const TornSegment& p, const TornSegment& q) {
+    return std::tie(p.a.x(), p.a.y(), p.b.x(), p.b.y()) < std::tie(q.a.x(), q.a.y(), q.b.x(), q.b.y());
+  });
+  std::vector<TornSegment> unique;
+  for (const TornSegment& s : segments) {
+    if (!unique.empty() && (unique.back().a - s.a).norm() < 1e-9 && (unique.back().b - s.b).norm() < 1e-9) continue;
+    unique.push_back(s);
+  }
+  return unique;
+}
+
+inline double tornLength(const std::vector<TornSegment>& segments) {
+  double sum = 0.0;
+  for (const TornSegment& s : segments) sum += s.length();
+  return sum;
+}
+
+// Share of the torn length whose direction lies within `toleranceDeg` of `directionDeg`.
+inline double shareOfLengthWithin(const std::vector<TornSegment>& segments, double directionDeg, double toleranceDeg) {
+  double near = 0.0;
+  for (const TornSegment& s : segments) {
+    if (lineAngleBetweenDeg(s.directionDeg(), directionDeg) <= toleranceDeg) near += s.length();
+  }
+  const double total = tornLength(segments);
+  return total > 0.0 ? near / total : 0.0;
+}
+
+// A crack: torn segments joined end to end (in material space), with its length and the
+// direction of its principal axis (the line that best fits its segments, weighted by length).
+struct Crack {
+  double length = 0.0;
+  double directionDeg = 0.0;
+};
+
+inline std::vector<Crack> cracks(const std::vector<TornSegment>& segments) {
+  // Join segments whose ends meet (round the material points to a tenth of a micrometre).
+  std::map<std::pair<long long, long long>, int> pointId;
+  auto idOf = [&](const Vec2& p) {
+    const auto key = std::make_pair(std::llround(p.x() * 1e7), std::llround(p.y() * 1e7));
+    return pointId.emplace(key, static_cast<int>(pointId.size())).first->second;
+  };
+  std::vector<int> parent;
+  auto root = [&](int i) {
+    while (parent[i] != i) i = parent[i] = parent[parent[i]];
+    return i;
+  };
+  std::vector<std::pair<int, int>> ends;
+  for (const TornSegment& s : segments) ends.emplace_back(idOf(s.a), idOf(s.b));
+  parent.resize(pointId.size());
+  std::iota(parent.begin(), parent.end(), 0);
+  for (const auto& [a, b] : ends) parent[root(a)] = root(b);
+  std::map<int, std::vector<int>> members;
+  for (std::size_t k = 0; k < segments.size(); ++k) members[root(ends[k].first)].push_back(static_cast<int>(k));
+  std::vector<Crack> out;
+  for (const auto& [r, list] : members) {
+    // The principal axis of the segments' direction tensor, each weighted by its length.
+    Mat2 tensor = Mat2::Zero();
+    Crack crack;
+    for (int k : list) {
+      const Vec2 d = segments[k].b - segments[k].a;
+      tensor += d * d.transpose() / std::max(d.norm(), 1e-300);
+      crack.length += d.norm();
+    }
+    crack.directionDeg = 0.5 * std::atan2(2.0 * tensor(0, 1), tensor(0, 0) - tensor(1, 1)) * 180.0 / kPi;
+    if (crack.directionDeg < 0.0) crack.directionDeg += 180.0;
+    out.push_back(crack);
+  }
+  return out;
+}
+
+}  // namespace weft::test

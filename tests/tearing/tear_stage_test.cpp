@@ -1,0 +1,163 @@
+// The tearing stage's choices within one step: no stall when the mesh refuses a line, and crack
+// tips that need less than intact cloth (initiation against propagation).
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "sim/cloth.h"
+#include "sim/cloth_topology.h"
+#include "support/tear_scenes.h"
+#include "support/test_scenes.h"
+#include "tearing/tear_mesh.h"
+#include "tearing/tear_stage.h"
+#include "tearing/vertex_fan.h"
+
+namespace weft {
+namespace {
+
+constexpr double kDt = 1.0 / 240;
+
+// An 11 x 11 sheet (0.1 m cells) of the isotropic test material.
+Scene sheetScene(const TearTable& tears) {
+  Scene scene = test::hangingSheet(test::isotropicMaterial(2000.0, 0.3, 1e-5), 11, kDt);
+  scene.cloths[0].material.tearTable = tears;
+  scene.cloths[0].pins.clear();
+  return scene;
+}
+
+// Positions from the rest shape stretched by `stretch` in both directions, plus a bulge of extra
+// stretch `bump` around `centre` (material space), so that the vertex there is the most loaded.
+void prestress(Cloth& cloth, double stretch, double bump = 0.0, Vec2 centre = Vec2(0.5, 0.5)) {
+  for (const Triangle& t : cloth.mesh.tris) {
+    for (int k = 0; k < 3; ++k) {
+      const Vec2 r = t.rest[k];
+      const Vec2 d = r - centre;
+      const Vec2 p = (1.0 + stretch) * r + bump * std::exp(-d.squaredNorm() / 0.02) * d;
+      cloth.mesh.x[t.v[k]] = Vec3(p.x(), p.y(), 0.0);
+    }
+  }
+}
+
+// The separation strength of the most loaded line of the cloth (a table that tears at anything).
+double largestSeparation(const Cloth& cloth) {
+  Scene scene = sheetScene(test::tearTable({1.0}, 1e-6));
+  Cloth probe = cloth;
+  probe.material.tearTable = scene.cloths[0].material.tearTable;
+  TearStage stage(scene);
+  std::vector<Cloth> cloths{probe};
+  StageProfile profile;
+  stage.run(cloths, 0.0, kDt, profile);
+  return stage.log().empty() ? 0.0 : stage.log().front().separation;
+}
+
+int vertexAt(const ClothMesh& mesh, const Vec2& rest) {
+  for (const Triangle& t : mesh.tris) {
+    for (int k = 0; k < 3; ++k) {
+      if ((t.rest[k] - rest).norm() < 1e-9) return t.v[k];
+    }
+  }
+  return kNone;
+}
+
+// The most loaded vertex's only line runs 10 degrees from its edges (a sliver to cross) and every
+// neighbour is pinned (nothing to move onto the line): the mesh refuses it. The stage then tries
+// the next vertex in the same step instead of stalling (the old stage tore nothing that step, and
+// in some runs never again).
+TEST(TearStage, ALineTheMeshRefusesIsPassedOverForTheNextVertexInTheSameStep) {
+  // Weak only along the warp, which runs at 80 degrees in material space (weft at -10).
+  const Scene scene = sheetScene(test::tearTable({1.0, 3.0, 3.0, 3.0}, 1.0));
+  Cloth cloth = buildCloth(scene.cloths[0], "test", 0);
+  cloth.weftAngleRad = degToRad(-10.0);
+  rebuildElements(cloth);
+  prestress(cloth, 0.05, 0.03);
+  const int loaded = vertexAt(cloth.mesh, Vec2(0.5, 0.5));
+  // The most loaded line along the weak direction, read with the same table scaled down to nothing.
+  Scene probe = scene;
+  probe.cloths[0].material.tearTable = test::tearTable({1.0, 3.0, 3.0, 3.0}, 1e-6);
+  cloth.material.tearTable = probe.cloths[0].material.tearTable;
+  double zeta = 0.0;
+  {
+    TearStage stage(probe);
+    std::vector<Cloth> cloths{cloth};
+    StageProfile profile;
+    stage.run(cloths, 0.0, kDt, profile);
+    ASSERT_FALSE(stage.log().empty());
+    zeta = stage.log()[0].separation;
+  }
+  ASSERT_GT(zeta, 10.0);
+  Scene tearing = scene;
+  tearing.cloths[0].material.tearTable = test::tearTable({1.0, 3.0, 3.0, 3.0}, 0.8 * zeta);
+  cloth.material.tearTable = tearing.cloths[0].material.tearTable;
+
+  // Without the pins the most loaded vertex tears first...
+  {
+    TearStage stage(tearing);
+    std::vector<Cloth> cloths{cloth};
+    StageProfile profile;
+    stage.run(cloths, 0.0, kDt, profile);
+    ASSERT_EQ(stage.log().size(), 1u);
+    EXPECT_EQ(stage.log()[0].vertex, loaded);
+    EXPECT_NEAR(stage.log()[0].angleDeg, 80.0, 1.0);
+  }
+  // ...with them it is refused, and another vertex tears in the same step.
+  const VertexFan fan = walkFan(cloth.mesh, loaded, findTriangleAt(cloth.mesh, loaded));
+  for (int t : fan.triangles) {
+    for (int v : cloth.mesh.tris[t].v) cloth.mesh.pinned[v] = v != loaded;
+  }
+  TearStage stage(tearing);
+  std::vector<Cloth> cloths{cloth};
+  StageProfile profile;
+  stage.run(cloths, 0.0, kDt, profile);
+  EXPECT_GE(stage.stats().refused, 1);
+  ASSERT_EQ(stage.log().size(), 1u);
+  EXPECT_NE(stage.log()[0].vertex, loaded);
+  EXPECT_GT(stage.log()[0].ratio, 1.0);
+}
+
+// Initiation against propagation: under the same load, an intact sheet holds, and a notched one
+// tears on from the notch's tip, which needs only the table's propagation factor times its
+// strength. With a factor of 1 (today's presets) the notch holds too.
+TEST(TearStage, ANotchRunsWhereAnIntactSheetHoldsWhenTipsNeedLessStrength) {
+  const Scene scene = sheetScene(test::tearTable({1.0}, 1.0));
+  const Cloth intact = buildCloth(scene.cloths[0], "test", 0);
+  Cloth notched = intact;
+  // A notch from the bottom border's middle, three cells up.
+  int tip = vertexAt(notched.mesh, Vec2(0.5, 0.0));
+  for (int k = 0; k < 3; ++k) {
+    TopologyChange change;
+    ASSERT_TRUE(tearThroughVertex(notched.mesh, tip, Vec2(0, 1), TearGuards{}, notched.material.areaDensity, change));
+    applyTopologyChange(notched, change);
+    tip = change.crackEnds.at(0);
+  }
+  Cloth loaded = intact;
+  prestress(loaded, 0.05);
+  const double zeta = largestSeparation(loaded);
+  ASSERT_GT(zeta, 10.0);
+
+  for (const double factor : {0.5, 1.0}) {
+    TearTable table = test::tearTable({1.0}, zeta / 0.8);  // the intact sheet is at 80% of its strength
+    table.propagationFactor = factor;
+    Scene tearing = scene;
+    tearing.cloths[0].material.tearTable = table;
+    for (const bool withNotch : {false, true}) {
+      Cloth cloth = withNotch ? notched : intact;
+      cloth.material.tearTable = table;
+      prestress(cloth, 0.05);
+      TearStage stage(tearing);
+      std::vector<Cloth> cloths{cloth};
+      StageProfile profile;
+      stage.run(cloths, 0.0, kDt, profile);
+      if (withNotch && factor < 1.0) {
+        ASSERT_EQ(stage.log().size(), 1u) << "the notch should run on";
+        EXPECT_EQ(stage.log()[0].vertex, tip);
+        EXPECT_NEAR(stage.log()[0].ratio, 0.8 / factor, 0.05);
+        EXPECT_NEAR(std::fmod(stage.log()[0].angleDeg + 360.0, 180.0), 90.0, 1.0);  // on, across the load
+      } else {
+        EXPECT_TRUE(stage.log().empty()) << (withNotch ? "notched" : "intact") << ", factor " << factor;
+      }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace weft
