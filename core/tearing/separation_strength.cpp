@@ -114,22 +114,6 @@ FanSector makeSector(double start, double span, const Mat2& stress) {
   return sector;
 }
 
-namespace {
-
-// An open fan wider than a half disc (a crack's tip: the fan goes all around but for the slit)
-// has two sides of up to half a circle each, as an interior line has, so a uniform stress gives
-// twice the traction across the ray that a straight border's quarter circles give. Split
-// symmetrically, the sides of a fan of angle F collect |sigma n| 2 sin^2(F / 4) (1 for a border,
-// 2 for a slit), so wider fans are scaled by its inverse and zeta stays the traction across the
-// line (ARCSim doubles at every boundary and crack node, which counts a tip's traction twice).
-// Narrower fans (corners) keep the border's scale, as before.
-double openFanScale(const StressFan& fan) {
-  const double s = std::sin(0.25 * fan.openSpan);
-  return std::min(1.0, 1.0 / (2.0 * s * s));
-}
-
-}  // namespace
-
 double separationStrength(const StressFan& fan, double angle) {
   const Vec2 gLine = gAt(angle);
   if (fan.closed) {
@@ -144,7 +128,7 @@ double separationStrength(const StressFan& fan, double angle) {
   const Vec2 gStart = gAt(fan.openStart), gEnd = gAt(fan.openStart + fan.openSpan);
   const Vec2 q1 = arcForce(fan, fan.openStart, before, gStart, gLine);
   const Vec2 q2 = arcForce(fan, fan.openStart + before, fan.openSpan - before, gLine, gEnd);
-  return openFanScale(fan) * balancedPull(q1, q2);
+  return balancedPull(q1, q2);
 }
 
 double separationStrengthBound(const StressFan& fan) {
@@ -168,7 +152,7 @@ double separationStrengthBound(const StressFan& fan) {
   // is at most 2 sin(F / 4).
   const double byMean = fan.closed ? spectralNorm(mean) + 0.25 * deviation
                                    : 2.0 * std::sin(0.25 * fan.openSpan) * spectralNorm(mean) + 0.5 * deviation;
-  return (fan.closed ? 1.0 : openFanScale(fan)) * std::min(byArcs, byMean);
+  return std::min(byArcs, byMean);
 }
 
 }  // namespace weft

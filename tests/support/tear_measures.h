@@ -50,6 +50,16 @@ inline std::vector<TornSegment> tornSegments(const ClothMesh& mesh) {
   return unique;
 }
 
+// The segments whose middle lies in the box [lo, hi] (material space).
+inline std::vector<TornSegment> segmentsInside(const std::vector<TornSegment>& segments, const Vec2& lo, const Vec2& hi) {
+  std::vector<TornSegment> inside;
+  for (const TornSegment& s : segments) {
+    const Vec2 mid = 0.5 * (s.a + s.b);
+    if ((mid.array() >= lo.array()).all() && (mid.array() <= hi.array()).all()) inside.push_back(s);
+  }
+  return inside;
+}
+
 inline double tornLength(const std::vector<TornSegment>& segments) {
   double sum = 0.0;
   for (const TornSegment& s : segments) sum += s.length();
@@ -66,35 +76,38 @@ inline double shareOfLengthWithin(const std::vector<TornSegment>& segments, doub
   return total > 0.0 ? near / total : 0.0;
 }
 
-// A crack: torn segments joined end to end (in material space), with its length and the
-// direction of its principal axis (the line that best fits its segments, weighted by length).
+// A crack: a run of torn segments joined end to end where the crack neither branches nor turns by
+// more than `maxTurnDeg` (two straight cracks linked by a short jog are two cracks and a jog), with
+// its length and the direction of its principal axis (the line that best fits its segments,
+// weighted by length).
 struct Crack {
   double length = 0.0;
   double directionDeg = 0.0;
 };
 
-inline std::vector<Crack> cracks(const std::vector<TornSegment>& segments) {
-  // Join segments whose ends meet (round the material points to a tenth of a micrometre).
-  std::map<std::pair<long long, long long>, int> pointId;
-  auto idOf = [&](const Vec2& p) {
-    const auto key = std::make_pair(std::llround(p.x() * 1e7), std::llround(p.y() * 1e7));
-    return pointId.emplace(key, static_cast<int>(pointId.size())).first->second;
-  };
-  std::vector<int> parent;
+inline std::vector<Crack> cracks(const std::vector<TornSegment>& segments, double maxTurnDeg = 20.0) {
+  // Segment ends meet where their material points agree to a tenth of a micrometre.
+  std::map<std::pair<long long, long long>, std::vector<int>> at;  // point -> segments ending there
+  auto key = [](const Vec2& p) { return std::make_pair(std::llround(p.x() * 1e7), std::llround(p.y() * 1e7)); };
+  for (std::size_t k = 0; k < segments.size(); ++k) {
+    at[key(segments[k].a)].push_back(static_cast<int>(k));
+    at[key(segments[k].b)].push_back(static_cast<int>(k));
+  }
+  std::vector<int> parent(segments.size());
+  std::iota(parent.begin(), parent.end(), 0);
   auto root = [&](int i) {
     while (parent[i] != i) i = parent[i] = parent[parent[i]];
     return i;
   };
-  std::vector<std::pair<int, int>> ends;
-  for (const TornSegment& s : segments) ends.emplace_back(idOf(s.a), idOf(s.b));
-  parent.resize(pointId.size());
-  std::iota(parent.begin(), parent.end(), 0);
-  for (const auto& [a, b] : ends) parent[root(a)] = root(b);
+  for (const auto& [point, ends] : at) {
+    if (ends.size() != 2) continue;  // a crack's end, or a branch
+    const double turn = lineAngleBetweenDeg(segments[ends[0]].directionDeg(), segments[ends[1]].directionDeg());
+    if (turn <= maxTurnDeg) parent[root(ends[0])] = root(ends[1]);
+  }
   std::map<int, std::vector<int>> members;
-  for (std::size_t k = 0; k < segments.size(); ++k) members[root(ends[k].first)].push_back(static_cast<int>(k));
+  for (std::size_t k = 0; k < segments.size(); ++k) members[root(static_cast<int>(k))].push_back(static_cast<int>(k));
   std::vector<Crack> out;
   for (const auto& [r, list] : members) {
-    // The principal axis of the segments' direction tensor, each weighted by its length.
     Mat2 tensor = Mat2::Zero();
     Crack crack;
     for (int k : list) {

@@ -276,7 +276,7 @@ TEST(Tearing, TheBoundShortcutChangesNoTear) {
 }
 
 TEST(Tearing, SeveralTearsPerStepFollowTheSameDirections) {
-  // The large-scene option: up to 4 well-separated tears per step. It tears sooner, and the lines
+  // The large-scene option: up to 4 well-separated tears per step. It tears faster, and the lines
   // keep the table's preference.
   const TearTable cloth2 = table({35.0, 25.0, 12.0, 25.0}, 10.0);
   Scene one = biaxialSheet(20, cloth2, 0.0, false);
@@ -284,14 +284,24 @@ TEST(Tearing, SeveralTearsPerStepFollowTheSameDirections) {
   four.tearing.maxTearsPerStep = 4;
   four.tearing.minSpacing = 0.2;
   World a(one), b(four);
+  // Tears in the first ten steps after the sheet starts tearing (later, the two sheets have torn
+  // differently and their counts say nothing of the option).
+  int firstTearStep = -1;
+  std::size_t earlyOne = 0, earlyFour = 0;
   for (int s = 0; s < 500; ++s) {
     a.step();
     b.step();
+    if (firstTearStep < 0 && (!a.tearLog().empty() || !b.tearLog().empty())) firstTearStep = s;
+    if (firstTearStep >= 0 && s == firstTearStep + 10) {
+      earlyOne = a.tearLog().size();
+      earlyFour = b.tearLog().size();
+    }
   }
   const double shareOne = shareNear(a.tearLog(), 0.0, 22.5), shareFour = shareNear(b.tearLog(), 0.0, 22.5);
-  std::printf("[ tears per step ] 1: %zu tears, %.2f along the weak direction; 4: %zu tears, %.2f\n", a.tearLog().size(),
-              shareOne, b.tearLog().size(), shareFour);
-  EXPECT_GE(b.tearLog().size(), a.tearLog().size());
+  std::printf("[ tears per step ] first 10 steps of tearing: 1: %zu tears, 4: %zu; in 500 steps: 1: %zu tears, %.2f "
+              "along the weak direction; 4: %zu tears, %.2f\n",
+              earlyOne, earlyFour, a.tearLog().size(), shareOne, b.tearLog().size(), shareFour);
+  EXPECT_GT(earlyFour, earlyOne);
   EXPECT_GE(shareFour, 0.6);
   EXPECT_TRUE(b.metrics().finite);
 }
