@@ -28,6 +28,7 @@ namespace fs = std::filesystem;
 struct TearingBenchRow {
   std::string lines;
   bool bound = true;
+  bool propagate = false;
   int vertices = 0;  // at the end of the last repeat
   double medianTearingMs = 0.0;
   double medianStepMs = 0.0;
@@ -36,16 +37,18 @@ struct TearingBenchRow {
   double linesPerStep = 0.0;
 };
 
-TearingBenchRow measure(const TearingBenchOptions& options, const std::string& lines, bool bound) {
+TearingBenchRow measure(const TearingBenchOptions& options, const std::string& lines, bool bound, bool propagate) {
   const fs::path scene = fs::path(WEFT_SOURCE_DIR) / "presets" / "scenes" / "sheet-pulled-apart.json";
   const int n = options.resolution;
   const std::vector<std::string> overrides{
       "cloths.0.mesh.grid.resolution=[" + std::to_string(n) + "," + std::to_string(n) + "]",
-      "tearing.candidates=" + lines, std::string("tearing.skip_by_bound=") + (bound ? "true" : "false"),
+      "tearing.candidates=\"" + lines + "\"", std::string("tearing.skip_by_bound=") + (bound ? "true" : "false"),
+      std::string("tearing.propagate=") + (propagate ? "true" : "false"),
       "solver.threads=" + std::to_string(options.threads)};
   TearingBenchRow row;
   row.lines = lines;
   row.bound = bound;
+  row.propagate = propagate;
   std::vector<double> tearingSamples, stepSamples;
   long long tears = 0, looked = 0, skipped = 0, evaluated = 0;
   for (int repeat = 0; repeat < options.repeats; ++repeat) {
@@ -79,13 +82,18 @@ TearingBenchRow measure(const TearingBenchOptions& options, const std::string& l
 int runTearingBench(const TearingBenchOptions& options) {
   std::vector<TearingBenchRow> rows;
   try {
-    std::printf("%-7s %-6s %8s %16s %14s %8s %10s %12s %12s\n", "lines", "bound", "vertices", "tearing ms/step",
-                "whole ms/step", "share", "tears", "skipped", "lines/step");
-    for (const char* lines : {"thesis", "dense"}) {
-      for (bool bound : {true, false}) {
-        const TearingBenchRow r = measure(options, lines, bound);
-        std::printf("%-7s %-6s %8d %16.3f %14.3f %7.1f%% %10.1f %11.1f%% %12.0f\n", r.lines.c_str(),
-                    r.bound ? "on" : "off", r.vertices, r.medianTearingMs, r.medianStepMs,
+    std::printf("%-7s %-6s %-9s %8s %16s %14s %8s %10s %12s %12s\n", "lines", "bound", "propagate", "vertices",
+                "tearing ms/step", "whole ms/step", "share", "tears", "skipped", "lines/step");
+    struct Config {
+      const char* lines;
+      bool bound, propagate;
+    };
+    for (const Config c : {Config{"thesis", true, false}, Config{"thesis", false, false}, Config{"dense", true, false},
+                           Config{"dense", false, false}, Config{"dense", true, true}}) {
+      {
+        const TearingBenchRow r = measure(options, c.lines, c.bound, c.propagate);
+        std::printf("%-7s %-6s %-9s %8d %16.3f %14.3f %7.1f%% %10.1f %11.1f%% %12.0f\n", r.lines.c_str(),
+                    r.bound ? "on" : "off", r.propagate ? "on" : "off", r.vertices, r.medianTearingMs, r.medianStepMs,
                     100.0 * r.medianTearingMs / r.medianStepMs, r.tearsPerRepeat, 100.0 * r.skippedShare,
                     r.linesPerStep);
         std::fflush(stdout);
@@ -101,10 +109,10 @@ int runTearingBench(const TearingBenchOptions& options) {
                              "sheet-pulled-apart, " + std::to_string(options.resolution) + "^2, " +
                                  std::to_string(options.warmup) + " warm-up steps, " + std::to_string(options.steps) +
                                  " timed steps x " + std::to_string(options.repeats) + " repeats");
-  csv << "lines,skip_by_bound,vertices,median_tearing_ms_per_step,median_step_ms,tearing_share,tears_per_repeat,"
+  csv << "lines,skip_by_bound,propagate,vertices,median_tearing_ms_per_step,median_step_ms,tearing_share,tears_per_repeat,"
          "skipped_vertex_share,lines_evaluated_per_step\n";
   for (const auto& r : rows) {
-    csv << r.lines << "," << (r.bound ? "true" : "false") << "," << r.vertices << "," << r.medianTearingMs << ","
+    csv << r.lines << "," << (r.bound ? "true" : "false") << "," << (r.propagate ? "true" : "false") << "," << r.vertices << "," << r.medianTearingMs << ","
         << r.medianStepMs << "," << r.medianTearingMs / r.medianStepMs << "," << r.tearsPerRepeat << ","
         << r.skippedShare << "," << r.linesPerStep << "\n";
   }
