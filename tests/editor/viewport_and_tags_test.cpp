@@ -21,6 +21,8 @@
 namespace weft::editor {
 namespace {
 
+constexpr double kOutputFrame = 1.0 / 30.0;  // one displayed frame
+
 namespace fs = std::filesystem;
 using nlohmann::json;
 
@@ -69,7 +71,7 @@ TEST(ViewportInteraction, APressOnTheClothGrabsItADragMovesTheTargetAReleaseLets
   interaction.update(*s.session, s.camera, mouse, false, 800, 600);
   EXPECT_GT(s.session->world().grabState()->spring.target.y(), start.y() + 0.1);
   EXPECT_NEAR(s.session->world().grabState()->spring.target.z(), 0.0, 1e-9) << "dragged in the plane facing the camera";
-  s.session->advanceFrame();
+  s.session->advanceFrame(kOutputFrame);
   mouse.left = false;
   interaction.update(*s.session, s.camera, mouse, false, 800, 600);
   EXPECT_FALSE(s.session->world().grabState());
@@ -242,7 +244,7 @@ int framesToFirstTear(bool pull, int frames) {
     if (s.session->world().tearStats().tears > 0) return frame;
     mouse.y = 300 + 8 * frame;  // down the screen, much further than the sheet can stretch
     interaction.update(*s.session, s.camera, mouse, false, 800, 600);
-    s.session->advanceFrame();
+    s.session->advanceFrame(kOutputFrame);
   }
   return frames;
 }

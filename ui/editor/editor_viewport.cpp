@@ -7,8 +7,8 @@
 namespace weft::editor {
 
 ViewportRect sceneViewport(int displayWidth, int displayHeight) {
-  ViewportRect rect{kLeftColumnWidth, 0, displayWidth - kLeftColumnWidth - kRightColumnWidth,
-                    displayHeight - kStatusBarHeight};
+  ViewportRect rect{kLeftColumnWidth, kMenuBarHeight, displayWidth - kLeftColumnWidth - kRightColumnWidth,
+                    displayHeight - kMenuBarHeight - kStatusBarHeight};
   if (rect.width < 200 || rect.height < 100) rect = ViewportRect{0, 0, std::max(displayWidth, 1), std::max(displayHeight, 1)};
   return rect;
 }

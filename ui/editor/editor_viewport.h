@@ -8,11 +8,13 @@
 
 namespace weft::editor {
 
-// The window's layout: panels in a column on each side, a status bar along the bottom (pixels).
+// The window's layout: a menu bar along the top, panels in a column on each side, a status bar
+// along the bottom (pixels).
 inline constexpr int kPanelMargin = 8;
 inline constexpr int kLeftColumnWidth = 316;   // left panels 300 wide, with margins
 inline constexpr int kRightColumnWidth = 476;  // right panels 460 wide, with margins
 inline constexpr int kStatusBarHeight = 24;
+inline constexpr int kMenuBarHeight = 19;  // the main menu bar along the top (ImGui's default font)
 
 struct ViewportRect {
   int x = 0, y = 0;           // top-left corner, pixels from the window's top-left
