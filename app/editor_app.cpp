@@ -185,8 +185,18 @@ int runEditor(const EditorOptions& options) {
     window.bindDefaultFramebuffer();
     const ui::PixelSize size = window.framebufferSize();
     if (size.width > 0 && size.height > 0) {  // zero while minimized
-      editor::drawSceneViewport(renderer, ui::renderViewOf(workspace.session().world()), camera, viewportRect(), size.width,
-                                size.height);
+      ui::RenderView view = ui::renderViewOf(workspace.session().world());
+      // In tag mode, the feature a click would toggle, highlighted before the click.
+      if (const auto& hovered = interaction.hovered(); hovered && ui.panels.tool &&
+                                                      ui.panels.tool->obstacle() < static_cast<int>(view.obstacles.size())) {
+        ui::ObstacleView& tool = view.obstacles[static_cast<std::size_t>(ui.panels.tool->obstacle())];
+        if (hovered->isVertex()) {
+          tool.highlightVertices.push_back(hovered->vertex);
+        } else {
+          tool.highlightEdges.push_back(hovered->edge);
+        }
+      }
+      editor::drawSceneViewport(renderer, view, camera, viewportRect(), size.width, size.height);
     }
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
   };

@@ -29,25 +29,24 @@ bool ViewportInteraction::update(EditorSession& session, const ui::OrbitCamera& 
   const bool released = !mouse.left && wasDown_;
   wasDown_ = mouse.left;
 
+  // In tag mode, what a click would toggle, found (and shown) before the click.
+  hovered_.reset();
+  if (tags != nullptr && mode_ != Mode::Grab && mode_ != Mode::DragTool) {
+    TagPickSettings pick;
+    pick.edgePixels = settings_.tagTolerancePixels;
+    hovered_ = pickTagTarget(world, tags->obstacle(), camera, mouse.x, mouse.y, width, height, pick);
+  }
+
   if (pressed) {
     mode_ = Mode::Orbit;  // unless the press lands on something below
-    if (tags != nullptr) {
-      // A world distance that looks like tagTolerancePixels at the distance of what was hit.
-      const double perPixel = 2.0 * std::tan(camera.fovYDeg * kPi / 360.0) / std::max(height, 1);
-      if (auto hit = pickObstacleFeature(world, origin, dir, 1e9)) {
-        const double tolerance = settings_.tagTolerancePixels * perPixel * (hit->point - origin).norm();
-        if (hit->obstacle == tags->obstacle()) {
-          if (auto near = pickObstacleFeature(world, origin, dir, tolerance)) {
-            if (near->vertex != kNone) {
-              tags->toggleVertex(session, near->vertex);
-            } else if (near->edge != kNone) {
-              tags->toggleEdge(session, world.obstacle(near->obstacle).topology.edges[static_cast<std::size_t>(near->edge)]);
-            }
-          }
-          mode_ = Mode::Idle;
-          return true;
-        }
+    if (hovered_) {
+      if (hovered_->isVertex()) {
+        tags->toggleVertex(session, hovered_->vertex);
+      } else {
+        tags->toggleEdge(session, hovered_->edge);
       }
+      mode_ = Mode::Idle;
+      return true;
     }
     if (altHeld) {
       if (auto hit = pickObstacleFeature(world, origin, dir, 0.0)) {

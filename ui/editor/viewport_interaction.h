@@ -5,12 +5,14 @@
 // positions (window pixels) into rays and calls the World's interaction API, so tests drive it.
 //
 // Left press on a cloth grabs its nearest vertex; on a kinematic tool with Alt held, drags the
-// tool; in tag mode, on a tool, toggles the nearest vertex (or else edge) sharp. A press on
-// nothing leaves the mouse to the orbit camera.
+// tool; in tag mode, toggles the tool's feature under the cursor (tag_picking.h: the one
+// highlighted before the click, an edge when the cursor is on its segment). A press on nothing
+// leaves the mouse to the orbit camera.
 #include <optional>
 
 #include "editor/editor_session.h"
 #include "editor/sharp_tag_edits.h"
+#include "editor/tag_picking.h"
 #include "orbit_camera.h"
 #include "window_input.h"
 
@@ -38,6 +40,8 @@ class ViewportInteraction {
   void throwBall(EditorSession& session, const ui::OrbitCamera& camera, double x, double y, int width, int height) const;
 
   bool grabbing() const { return mode_ == Mode::Grab; }
+  // In tag mode: the tool's feature a click would toggle now (drawn highlighted), if any.
+  const std::optional<TagTarget>& hovered() const { return hovered_; }
 
  private:
   enum class Mode { Idle, Grab, DragTool, Orbit };
@@ -50,6 +54,7 @@ class ViewportInteraction {
   Vec3 anchor_ = Vec3::Zero();     // grabbed point or tool point under the cursor at the press
   Vec3 toolOffset_ = Vec3::Zero(); // tool position minus anchor
   int tool_ = -1;
+  std::optional<TagTarget> hovered_;
 };
 
 }  // namespace weft::editor
