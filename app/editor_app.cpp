@@ -121,9 +121,15 @@ void viewportMouse(editor::EditorSession& session, editor::EditorUi& ui, ui::Orb
   const bool overScene = !io.WantCaptureMouse && rect.contains(mouse.x + rect.x, mouse.y + rect.y);
   if (!overScene && !interaction.grabbing()) mouse.left = false;
   ui::MouseState forCamera = buttons;
-  const bool taken = interaction.update(session, camera, mouse, io.KeyAlt, rect.width, rect.height,
+  const bool taken = interaction.update(session, camera, mouse, {io.KeyAlt, io.KeyShift}, rect.width, rect.height,
                                         ui.panels.tagMode && ui.panels.tool ? &*ui.panels.tool : nullptr);
   if (overScene && !taken) controls.update(camera, forCamera, win.height);
+  if (const auto box = interaction.box()) {  // tag mode's Shift + drag
+    const ImVec2 a(static_cast<float>((rect.x + box->x0) / scale), static_cast<float>((rect.y + box->y0) / scale));
+    const ImVec2 b(static_cast<float>((rect.x + box->x1) / scale), static_cast<float>((rect.y + box->y1) / scale));
+    ImGui::GetForegroundDrawList()->AddRectFilled(a, b, IM_COL32(255, 165, 0, 40));
+    ImGui::GetForegroundDrawList()->AddRect(a, b, IM_COL32(230, 130, 0, 255));
+  }
   const bool throwKey = !io.WantCaptureKeyboard && ImGui::IsKeyPressed(GLFW_KEY_B);
   if (ui.panels.throwBallRequested || (throwKey && overScene)) {
     const double x = ui.panels.throwBallRequested ? 0.5 * rect.width : mouse.x;
@@ -218,7 +224,9 @@ int runEditor(const EditorOptions& options) {
     ImGui::NewFrame();
     const ShortcutResult shortcut = applyShortcuts(*session, window.input());
     if (shortcut.quit) ui.quit = editor::QuitPrompt::Asking;
-    if (shortcut.frameScene || ui.frameScene) camera = startCamera(session->world(), viewportRect());
+    if (shortcut.frameScene || ui.frameScene) {
+      camera = editor::frameSelection(ui::renderViewOf(session->world()), ui.panels.obstacle, camera, viewportRect().aspect());
+    }
     ui.frameScene = false;
     viewportMouse(*session, ui, camera, controls, interaction, window, inputQueue, viewportRect());
     editor::drawEditorUi(*session, ui);

@@ -104,3 +104,28 @@ TEST_F(EditorPanelsTest, TheMenuBarHoldsUndoAndFramingWithTheirShortcuts) {
 
 }  // namespace
 }  // namespace weft::editor
+
+namespace weft::editor {
+namespace {
+
+TEST_F(EditorPanelsTest, FFramesTheSelectedObstacleOrTheSceneKeepingTheViewDirection) {
+  ui::OrbitCamera current;
+  current.yawDeg = 75.0;
+  current.pitchDeg = 10.0;
+  const ui::RenderView view = ui::renderViewOf(session_->world());
+  ASSERT_FALSE(view.obstacles.empty());
+  const ui::OrbitCamera ball = frameSelection(view, 0, current, 1.5);
+  Vec3 lo = Vec3::Constant(1e30), hi = Vec3::Constant(-1e30);
+  for (const Vec3& v : view.obstacles[0].vertices) {
+    lo = lo.cwiseMin(v);
+    hi = hi.cwiseMax(v);
+  }
+  EXPECT_LT((ball.target - 0.5 * (lo + hi)).norm(), 1e-9) << "looks at the selected ball";
+  EXPECT_DOUBLE_EQ(ball.yawDeg, 75.0);
+  EXPECT_DOUBLE_EQ(ball.pitchDeg, 10.0);
+  const ui::OrbitCamera scene = frameSelection(view, -1, current, 1.5);
+  EXPECT_GT(scene.distance, 2.0 * ball.distance) << "the whole scene is farther than the ball alone";
+}
+
+}  // namespace
+}  // namespace weft::editor

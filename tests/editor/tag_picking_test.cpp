@@ -87,3 +87,22 @@ TEST(TagPicking, NothingFarFromTheTool) {
 
 }  // namespace
 }  // namespace weft::editor
+
+namespace weft::editor {
+namespace {
+
+TEST(TagPicking, ABoxTagsTheEdgesItHoldsThatAreSeen) {
+  BoxInView s;
+  // A box around the whole block on screen: the back face's corners are drawn inside it too
+  // (perspective), but the front face hides them.
+  const auto edges = edgesInBox(s.session->world(), 0, s.camera, 1, 1, kW - 1, kH - 1, kW, kH);
+  ASSERT_FALSE(edges.empty());
+  const std::vector<Vec3> v = s.session->world().obstacleVertices(0);
+  for (const auto& e : edges) {
+    for (int end : e) EXPECT_NEAR(v[static_cast<std::size_t>(end)].z(), 0.2, 1e-9) << "only the front face's edges";
+  }
+  EXPECT_TRUE(edgesInBox(s.session->world(), 0, s.camera, 1, 1, 20, 20, kW, kH).empty());
+}
+
+}  // namespace
+}  // namespace weft::editor

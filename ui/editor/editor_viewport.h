@@ -27,6 +27,10 @@ struct ViewportRect {
 // the window is too narrow for the columns).
 ViewportRect sceneViewport(int displayWidth, int displayHeight);
 
+// F: a camera looking the way `current` looks, framing the selected obstacle (`obstacle` >= 0)
+// or else the cloths and obstacles as they are now (the view's action box).
+ui::OrbitCamera frameSelection(const ui::RenderView& view, int obstacle, const ui::OrbitCamera& current, double aspect);
+
 // Clears the bound framebuffer (displayWidth x displayHeight) to the background and draws the
 // view into `rect` only.
 void drawSceneViewport(ui::SceneRenderer& renderer, const ui::RenderView& view, const ui::OrbitCamera& camera,

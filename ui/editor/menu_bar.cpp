@@ -58,7 +58,9 @@ void drawViewMenu(EditorUi& ui) {
   const bool open = ImGui::BeginMenu("View");
   recordWidget(ui.panels, "menu/view");
   if (!open) return;
-  if (ImGui::MenuItem("Frame the scene", "F")) ui.frameScene = true;
+  if (ImGui::MenuItem(ui.panels.obstacle >= 0 ? "Frame the selected obstacle" : "Frame the scene", "F")) {
+    ui.frameScene = true;
+  }
   recordWidget(ui.panels, "menu/frame");
   ImGui::EndMenu();
 }

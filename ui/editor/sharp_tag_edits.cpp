@@ -130,6 +130,15 @@ void ToolTagEditor::toggleEdge(EditorSession& session, std::array<int, 2> edge) 
          "toggle sharp edge " + std::to_string(edge[0]) + "-" + std::to_string(edge[1]));
 }
 
+int ToolTagEditor::tagEdges(EditorSession& session, const std::vector<std::array<int, 2>>& edges,
+                            const std::string& label) {
+  const SharpTags before = tags();
+  const SharpTags after = withEdgesTagged(before, edges);
+  const int added = static_cast<int>(after.edges.size() - before.edges.size());
+  if (added > 0) commit(session, after, label + " (" + std::to_string(added) + " edges)");
+  return added;
+}
+
 int ToolTagEditor::tagEdgesSharperThan(EditorSession& session, double degrees) {
   const Obstacle& o = session.world().obstacle(obstacle_);
   const SharpTags before = tags();

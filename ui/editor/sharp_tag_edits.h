@@ -50,6 +50,9 @@ class ToolTagEditor {
   // Tags every edge sharper than `degrees` (edgesSharperThan), as one undo step. Returns how many
   // edges were newly tagged.
   int tagEdgesSharperThan(EditorSession& session, double degrees);
+  // Tags `edges` sharp (a box select), as one undo step labelled `label`. Returns how many were
+  // newly tagged.
+  int tagEdges(EditorSession& session, const std::vector<std::array<int, 2>>& edges, const std::string& label);
   void undo(EditorSession& session);
   void redo(EditorSession& session);
   void save() { document_.save(); }  // atomic, FILE.bak kept

@@ -89,4 +89,29 @@ std::optional<TagTarget> pickTagTarget(const World& world, int tool, const ui::O
   return std::nullopt;
 }
 
+std::vector<std::array<int, 2>> edgesInBox(const World& world, int tool, const ui::OrbitCamera& camera, double x0, double y0,
+                                           double x1, double y1, int width, int height) {
+  std::vector<std::array<int, 2>> edges;
+  if (tool < 0 || tool >= world.obstacleCount() || width <= 0 || height <= 0) return edges;
+  const Eigen::Matrix4f viewProjection = camera.projection(static_cast<double>(width) / height) * camera.view();
+  const std::vector<Vec3> vertices = world.obstacleVertices(tool);
+  const Vec3 eye = camera.eye();
+  const double left = std::min(x0, x1), right = std::max(x0, x1), top = std::min(y0, y1), bottom = std::max(y0, y1);
+  // Each vertex in the box, seen: nothing of the tool nearer the eye along its own pixel's ray.
+  std::vector<char> inside(vertices.size(), 0);
+  for (std::size_t v = 0; v < vertices.size(); ++v) {
+    const ScreenPoint s = toScreen(viewProjection, vertices[v], width, height);
+    if (!s.inFront || s.pixel.x() < left || s.pixel.x() > right || s.pixel.y() < top || s.pixel.y() > bottom) continue;
+    const double depth = (vertices[v] - eye).norm();
+    const Vec3 dir = (vertices[v] - eye) / depth;
+    const auto hit = pickObstacleFeature(world, eye, dir, 0.0);
+    const bool hidden = hit && hit->obstacle == tool && (hit->point - eye).norm() < depth - (0.02 * depth + 1e-3);
+    inside[v] = hidden ? 0 : 1;
+  }
+  for (const auto& e : world.obstacle(tool).topology.edges) {
+    if (inside[static_cast<std::size_t>(e[0])] && inside[static_cast<std::size_t>(e[1])]) edges.push_back(e);
+  }
+  return edges;
+}
+
 }  // namespace weft::editor

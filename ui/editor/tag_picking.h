@@ -6,6 +6,7 @@
 // tool's front surface at the cursor are not offered. No GL, no ImGui.
 #include <array>
 #include <optional>
+#include <vector>
 
 #include "orbit_camera.h"
 #include "sim/world.h"
@@ -27,5 +28,10 @@ struct TagPickSettings {
 // width x height view seen through `camera`; none when nothing is close enough.
 std::optional<TagTarget> pickTagTarget(const World& world, int tool, const ui::OrbitCamera& camera, double x, double y,
                                        int width, int height, const TagPickSettings& settings = {});
+
+// Box select: the tool's edges whose two ends are drawn inside the screen rectangle between
+// (x0, y0) and (x1, y1) (any corner order) and are not hidden behind the tool's own surface.
+std::vector<std::array<int, 2>> edgesInBox(const World& world, int tool, const ui::OrbitCamera& camera, double x0, double y0,
+                                           double x1, double y1, int width, int height);
 
 }  // namespace weft::editor
