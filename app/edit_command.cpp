@@ -28,6 +28,7 @@ struct EditOptions {
   std::vector<std::string> overrides;  // --set PATH=VALUE, kept for R (reload)
   std::optional<int> frames;           // window: displayed frames; headless: simulated frames
   fs::path screenshot;                 // the last frame as PNG
+  bool play = false;                   // start playing instead of paused at t = 0
 };
 
 // The highest-numbered frame_NNNN.png of a headless run, or empty when there is none.
@@ -78,6 +79,7 @@ int edit(const EditOptions& options) {
     editor.overrides = options.overrides;
     editor.frames = options.frames;
     editor.screenshot = options.screenshot;
+    editor.play = options.play;
     return runEditor(editor);
   } catch (const ui::WindowUnavailable& e) {
     std::cerr << "weft edit: cannot open a window (" << e.what() << "); running headless instead\n";
@@ -112,6 +114,7 @@ Command addEditCommand(CLI::App& app) {
                              ->check(CLI::PositiveNumber);
   cli->add_option("--screenshot", parsed->screenshot, "Write the last displayed frame to FILE as PNG")
       ->type_name("FILE");
+  cli->add_flag("--play", parsed->options.play, "Start playing (scenes open paused at t = 0)");
   return {cli, [parsed] {
             EditOptions given = parsed->options;
             if (parsed->framesOption->count() > 0) given.frames = parsed->frames;

@@ -4,6 +4,7 @@
 #include <imgui.h>
 #include <imgui_impl_glfw.h>
 #include <imgui_impl_opengl3.h>
+#include <imgui_internal.h>
 
 #include <chrono>
 #include <cstdint>
@@ -14,8 +15,11 @@
 #include "command.h"
 #include "editor/editor_session.h"
 #include "editor/editor_ui.h"
+#include "editor/editor_settings.h"
 #include "editor/editor_viewport.h"
+#include "editor/editor_workspace.h"
 #include "editor/headless_recorder.h"
+#include "editor/input_queue.h"
 #include "editor/viewport_interaction.h"
 #include "glfw_window.h"
 #include "orbit_controls.h"
@@ -55,11 +59,23 @@ struct ImGuiLayer {
   ImGuiLayer& operator=(const ImGuiLayer&) = delete;
 };
 
-// Keyboard shortcuts, when no text field has the keyboard. Returns false when the user asked to
-// quit.
-bool applyShortcuts(editor::EditorSession& session, const ui::WindowInput& input) {
+// What a shortcut asks of the app beyond the session.
+struct ShortcutResult {
+  bool quit = false;         // Esc with nothing open
+  bool frameScene = false;   // F
+};
+
+// Keyboard shortcuts, when no text field has the keyboard. Esc closes an open popup (a combo's
+// list; the prompts answer Esc themselves) before it means quit.
+ShortcutResult applyShortcuts(editor::EditorSession& session, const ui::WindowInput& input) {
+  ShortcutResult result;
   const ImGuiIO& io = ImGui::GetIO();
-  if (io.WantCaptureKeyboard) return true;
+  if (ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId | ImGuiPopupFlags_AnyPopupLevel)) {
+    if (input.pressed(ui::Key::kEscape)) ImGui::ClosePopupsExceptModals();
+    return result;
+  }
+  if (io.WantCaptureKeyboard) return result;
+  if (ImGui::IsKeyPressed(GLFW_KEY_F, false)) result.frameScene = true;
   if (io.KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_Z)) session.undo();
   if (io.KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_Y)) session.redo();
   if (io.KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_S)) {
@@ -71,7 +87,7 @@ bool applyShortcuts(editor::EditorSession& session, const ui::WindowInput& input
   }
   for (ui::Key key : input.keysPressed) {
     switch (key) {
-      case ui::Key::kEscape: return false;
+      case ui::Key::kEscape: result.quit = true; return result;
       case ui::Key::kSpace: session.paused = !session.paused; break;
       case ui::Key::kN:
         session.paused = true;
@@ -80,28 +96,40 @@ bool applyShortcuts(editor::EditorSession& session, const ui::WindowInput& input
       case ui::Key::kR: session.reset(); break;
     }
   }
-  return true;
+  return result;
 }
 
 // The mouse over the scene (not over a panel): grab, drag a tool or tag sharp first, and what
 // they leave to the orbit camera. B (or the tools panel's button) throws a ball at the cursor.
 void viewportMouse(editor::EditorSession& session, editor::EditorUi& ui, ui::OrbitCamera& camera,
                    ui::OrbitControls& controls, editor::ViewportInteraction& interaction, const ui::GlfwWindow& window,
-                   const editor::ViewportRect& rect) {
+                   const editor::InputQueue& queue, const editor::ViewportRect& rect) {
   const ImGuiIO& io = ImGui::GetIO();
   // Window coordinates to framebuffer pixels (they differ on high-DPI displays).
   const ui::PixelSize fb = window.framebufferSize();
   const ui::PixelSize win = window.windowSize();
   const double scale = win.width > 0 ? static_cast<double>(fb.width) / win.width : 1.0;
-  ui::MouseState mouse = window.input().mouse;
+  // Buttons as the queue hands them out, so a click shorter than a frame is still a press and a
+  // release (the window's own states would show neither).
+  ui::MouseState buttons = window.input().mouse;
+  buttons.left = queue.mouseDown(0);
+  buttons.right = queue.mouseDown(1);
+  buttons.middle = queue.mouseDown(2);
+  ui::MouseState mouse = buttons;
   mouse.x = mouse.x * scale - rect.x;
   mouse.y = mouse.y * scale - rect.y;
   const bool overScene = !io.WantCaptureMouse && rect.contains(mouse.x + rect.x, mouse.y + rect.y);
   if (!overScene && !interaction.grabbing()) mouse.left = false;
-  ui::MouseState forCamera = window.input().mouse;
-  const bool taken = interaction.update(session, camera, mouse, io.KeyAlt, rect.width, rect.height,
+  ui::MouseState forCamera = buttons;
+  const bool taken = interaction.update(session, camera, mouse, {io.KeyAlt, io.KeyShift}, rect.width, rect.height,
                                         ui.panels.tagMode && ui.panels.tool ? &*ui.panels.tool : nullptr);
   if (overScene && !taken) controls.update(camera, forCamera, win.height);
+  if (const auto box = interaction.box()) {  // tag mode's Shift + drag
+    const ImVec2 a(static_cast<float>((rect.x + box->x0) / scale), static_cast<float>((rect.y + box->y0) / scale));
+    const ImVec2 b(static_cast<float>((rect.x + box->x1) / scale), static_cast<float>((rect.y + box->y1) / scale));
+    ImGui::GetForegroundDrawList()->AddRectFilled(a, b, IM_COL32(255, 165, 0, 40));
+    ImGui::GetForegroundDrawList()->AddRect(a, b, IM_COL32(230, 130, 0, 255));
+  }
   const bool throwKey = !io.WantCaptureKeyboard && ImGui::IsKeyPressed(GLFW_KEY_B);
   if (ui.panels.throwBallRequested || (throwKey && overScene)) {
     const double x = ui.panels.throwBallRequested ? 0.5 * rect.width : mouse.x;
@@ -127,16 +155,21 @@ std::unique_ptr<editor::EditorSession> openSession(const EditorOptions& options)
 
 int runEditor(const EditorOptions& options) {
   // A bad scene is reported before any window opens.
-  std::unique_ptr<editor::EditorSession> session = openSession(options);
-  editor::Autosave autosave(options.autosaveDir);
   editor::EditorUi ui;
+  editor::EditorWorkspace workspace(openSession(options), editor::Autosave(options.autosaveDir), ui);
+  for (const editor::Recovery& r : ui.recoveries) {
+    std::printf("weft edit: offering unsaved edits to %s back (autosaved %s in %s)\n", r.original.string().c_str(),
+                r.savedAt.c_str(), r.autosaveFile.string().c_str());
+  }
+  const std::filesystem::path settingsFile = editor::defaultSettingsFile();
+  ui.panels.settings = editor::loadEditorSettings(settingsFile);
+  const editor::EditorSettings settingsAtStart = ui.panels.settings;
   // Recording runs this same binary headless (`weft run --png --video`) on the edited scene.
   editor::HeadlessRecorder recorder(std::filesystem::read_symlink("/proc/self/exe"));
   ui.panels.recorder = &recorder;
-  ui.recovery = autosave.find(std::filesystem::absolute(options.scene));
 
   ui::WindowSettings settings;
-  settings.title = "Weft: " + session->scene().name;
+  settings.title = "Weft: " + workspace.session().scene().name;
   settings.width = 1440;  // room for the panels on both sides of the scene
   settings.height = 900;
   ui::GlfwWindow window(settings);
@@ -146,9 +179,11 @@ int runEditor(const EditorOptions& options) {
     const ui::PixelSize size = window.framebufferSize();
     return editor::sceneViewport(size.width, size.height);
   };
-  ui::OrbitCamera camera = startCamera(session->world(), viewportRect());
+  ui::OrbitCamera camera = startCamera(workspace.session().world(), viewportRect());
   ui::OrbitControls controls;
   editor::ViewportInteraction interaction;
+  editor::InputQueue inputQueue;
+  workspace.session().paused = !options.play;
   std::printf("weft edit: %s (%s)\n", options.scene.string().c_str(), window.glRenderer().c_str());
   std::fflush(stdout);
 
@@ -156,66 +191,70 @@ int runEditor(const EditorOptions& options) {
     window.bindDefaultFramebuffer();
     const ui::PixelSize size = window.framebufferSize();
     if (size.width > 0 && size.height > 0) {  // zero while minimized
-      editor::drawSceneViewport(renderer, ui::renderViewOf(session->world()), camera, viewportRect(), size.width,
-                                size.height);
+      ui::RenderView view = ui::renderViewOf(workspace.session().world());
+      // In tag mode, the feature a click would toggle, highlighted before the click.
+      if (const auto& hovered = interaction.hovered(); hovered && ui.panels.tool &&
+                                                      ui.panels.tool->obstacle() < static_cast<int>(view.obstacles.size())) {
+        ui::ObstacleView& tool = view.obstacles[static_cast<std::size_t>(ui.panels.tool->obstacle())];
+        if (hovered->isVertex()) {
+          tool.highlightVertices.push_back(hovered->vertex);
+        } else {
+          tool.highlightEdges.push_back(hovered->edge);
+        }
+      }
+      editor::drawSceneViewport(renderer, view, camera, viewportRect(), size.width, size.height);
     }
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
   };
 
-  // Edits made from the command line (--set) are the session's starting point: they are unsaved,
-  // but only the user's own edits on top of them are worth offering back after a crash.
-  std::uint64_t startRevision = session->document().history().revision();
   Clock::time_point lastAutosave = Clock::now();
+  Clock::time_point lastFrame = Clock::now();
   int displayed = 0;
   while (ui.quit != editor::QuitPrompt::Confirmed) {
+    editor::EditorSession* session = &workspace.session();
     window.pollEvents();
+    inputQueue.add(window.input().buttonEvents);
     if (window.shouldClose()) {
       window.cancelClose();  // the prompt decides
       ui.quit = editor::QuitPrompt::Asking;
     }
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
+    inputQueue.applyTo(ImGui::GetIO());
     ImGui::NewFrame();
-    if (!applyShortcuts(*session, window.input())) ui.quit = editor::QuitPrompt::Asking;
-    viewportMouse(*session, ui, camera, controls, interaction, window, viewportRect());
+    const ShortcutResult shortcut = applyShortcuts(*session, window.input());
+    if (shortcut.quit) ui.quit = editor::QuitPrompt::Asking;
+    if (shortcut.frameScene || ui.frameScene) {
+      camera = editor::frameSelection(ui::renderViewOf(session->world()), ui.panels.obstacle, camera, viewportRect().aspect());
+    }
+    ui.frameScene = false;
+    viewportMouse(*session, ui, camera, controls, interaction, window, inputQueue, viewportRect());
     editor::drawEditorUi(*session, ui);
     ImGui::Render();
 
-    if (ui.recoveryChoice == editor::RecoveryChoice::Recover && ui.recovery) {
-      session = std::make_unique<editor::EditorSession>(options.scene, ui.recovery->document);
-      startRevision = ~std::uint64_t{0};  // recovered edits are the user's: keep them autosaved
-      ui.recovery.reset();
-    } else if (ui.recoveryChoice == editor::RecoveryChoice::Discard && ui.recovery) {
-      autosave.discard(ui.recovery->original);
-      ui.recovery.reset();
+    if (workspace.applyChoices(ui)) {
+      session = &workspace.session();
+      session->paused = true;  // every scene opens paused at t = 0
+      camera = startCamera(session->world(), viewportRect());
+      window.setTitle("Weft: " + session->scene().name);
     }
-    if (ui.open == editor::OpenPrompt::Confirmed) {
-      try {
-        auto opened = std::make_unique<editor::EditorSession>(ui.panels.openRequest);
-        autosave.discard(std::filesystem::absolute(session->document().file()));
-        session = std::move(opened);
-        startRevision = session->document().history().revision();
-        ui.panels.cloth = 0;
-        camera = startCamera(session->world(), viewportRect());
-        ui.panels.tool.reset();
-      } catch (const InputError& e) {
-        session->status = std::string("cannot open: ") + e.what();
-      }
-      ui.open = editor::OpenPrompt::None;
-      ui.panels.openRequest.clear();
-    }
+    workspace.forgetAutosaveWhenClean();
+    // Real time: the simulation advances by as long as the last frame took (at the target speed).
+    const Clock::time_point now = Clock::now();
+    const double frameSeconds = std::chrono::duration<double>(now - lastFrame).count();
+    lastFrame = now;
     if (displayed > 0) {
       const bool wasStopped = session->stopped();
-      session->advanceFrame();
+      session->advanceFrame(frameSeconds);
       if (session->stopped() && !wasStopped) std::cerr << "weft edit: " << session->status << "\n";
     }
 
     drawFrame();
     window.swapBuffers();
     ++displayed;
-    if (Clock::now() - lastAutosave > kAutosaveEvery && session->document().history().revision() != startRevision) {
+    if (Clock::now() - lastAutosave > kAutosaveEvery) {
       try {
-        session->autosave(autosave);
+        workspace.writeAutosave();
       } catch (const std::exception& e) {
         session->status = std::string("autosave failed: ") + e.what();
       }
@@ -223,9 +262,17 @@ int runEditor(const EditorOptions& options) {
     }
     if (options.frames && displayed >= *options.frames) break;
   }
-  // Quitting on purpose, saved or discarded: the autosave has done its job. (Stopped by --frames,
-  // a script's run, the autosave is left as the last timed write made it.)
-  if (ui.quit == editor::QuitPrompt::Confirmed) autosave.discard(std::filesystem::absolute(session->document().file()));
+  // Quitting on purpose, saved or discarded: the autosave this session wrote has done its job.
+  // (Stopped by --frames, a script's run, the autosave is left as the last timed write made it.)
+  if (ui.quit == editor::QuitPrompt::Confirmed) workspace.quitConfirmed();
+  if (!(ui.panels.settings == settingsAtStart)) {
+    try {
+      editor::saveEditorSettings(ui.panels.settings, settingsFile);
+    } catch (const std::exception& e) {
+      std::cerr << "weft edit: cannot remember the editor's settings: " << e.what() << "\n";
+    }
+  }
+  editor::EditorSession* session = &workspace.session();
 
   if (!options.screenshot.empty()) {
     drawFrame();  // the back buffer is undefined after a swap: draw the last frame again

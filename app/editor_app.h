@@ -4,8 +4,10 @@
 // panels, swap; an autosave every few seconds while there are unsaved edits.
 //
 // Mouse (outside the panels): left drag orbits, right or middle drag pans, the wheel zooms. Keys
-// (outside text fields): Space play/pause, N step, R reset, Ctrl+Z undo, Ctrl+Y redo, Ctrl+S save,
-// Esc quit (asking first when there are unsaved edits).
+// (outside text fields): Space play/pause, N step, R reset (the camera stays), F frame the selected
+// obstacle or else the scene,
+// Ctrl+Z undo, Ctrl+Y redo, Ctrl+S save, Esc closes an open popup, else quits (asking first when
+// there are unsaved edits). Scenes open paused at t = 0.
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -20,6 +22,7 @@ struct EditorOptions {
   std::vector<std::string> overrides;  // --set: applied as the first (undoable, unsaved) edit
   std::optional<int> frames;           // quit after this many displayed frames (tests, scripts)
   std::filesystem::path screenshot;    // when set: the last displayed frame as PNG, written on quit
+  bool play = false;                   // start playing (scenes open paused at t = 0 otherwise)
   std::filesystem::path autosaveDir = editor::Autosave::defaultDirectory();
 };
 

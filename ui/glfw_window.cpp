@@ -25,8 +25,13 @@ std::string lastGlfwError(const std::string& fallback) {
 WindowInput& inputOf(GLFWwindow* window) { return *static_cast<WindowInput*>(glfwGetWindowUserPointer(window)); }
 
 void onKey(GLFWwindow* window, int key, int /*scancode*/, int action, int /*mods*/) {
-  if (action == GLFW_RELEASE) return;
   WindowInput& input = inputOf(window);
+  if (action != GLFW_REPEAT) {
+    ButtonEvent event{false, key, action == GLFW_PRESS, 0.0, 0.0};
+    glfwGetCursorPos(window, &event.x, &event.y);
+    input.buttonEvents.push_back(event);
+  }
+  if (action == GLFW_RELEASE) return;
   switch (key) {
     case GLFW_KEY_SPACE: if (action == GLFW_PRESS) input.keysPressed.push_back(Key::kSpace); break;
     case GLFW_KEY_N: input.keysPressed.push_back(Key::kN); break;  // held down, it keeps stepping
@@ -37,6 +42,12 @@ void onKey(GLFWwindow* window, int key, int /*scancode*/, int action, int /*mods
 }
 
 void onScroll(GLFWwindow* window, double /*dx*/, double dy) { inputOf(window).mouse.scrollY += dy; }
+
+void onMouseButton(GLFWwindow* window, int button, int action, int /*mods*/) {
+  ButtonEvent event{true, button, action == GLFW_PRESS, 0.0, 0.0};
+  glfwGetCursorPos(window, &event.x, &event.y);
+  inputOf(window).buttonEvents.push_back(event);
+}
 
 }  // namespace
 
@@ -64,6 +75,7 @@ GlfwWindow::GlfwWindow(const WindowSettings& settings) : title_(settings.title) 
   glfwSetWindowUserPointer(window_, &input_);
   glfwSetKeyCallback(window_, onKey);
   glfwSetScrollCallback(window_, onScroll);
+  glfwSetMouseButtonCallback(window_, onMouseButton);
 }
 
 GlfwWindow::~GlfwWindow() {
@@ -79,6 +91,7 @@ void GlfwWindow::cancelClose() { glfwSetWindowShouldClose(window_, GLFW_FALSE); 
 
 void GlfwWindow::pollEvents() {
   input_.keysPressed.clear();
+  input_.buttonEvents.clear();
   input_.mouse.scrollY = 0.0;
   glfwPollEvents();
   // Position and buttons are states, read once per poll; presses and scrolling are events and

@@ -32,6 +32,8 @@ struct ObstacleView {
   std::vector<std::array<int, 3>> triangles;   // vertex ids
   std::vector<std::array<int, 2>> sharpEdges;  // vertex-id pairs tagged sharp (drawn red)
   std::vector<int> sharpVertices;              // vertex ids tagged sharp (drawn red)
+  std::vector<std::array<int, 2>> highlightEdges;  // under the editor's cursor (drawn amber, on top)
+  std::vector<int> highlightVertices;
 };
 
 struct RenderView {

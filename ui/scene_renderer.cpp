@@ -281,7 +281,7 @@ void SceneRenderer::draw(const RenderView& view, const OrbitCamera& camera, int 
   glDisable(GL_POLYGON_OFFSET_FILL);
 
   // Edges on top: torn red, cut green; sharp obstacle edges and vertices red.
-  std::vector<float> torn, cut, sharpEdges, sharpPoints;
+  std::vector<float> torn, cut, sharpEdges, sharpPoints, highlightEdges, highlightPoints;
   for (const ClothView& cloth : view.cloths) {
     const ClothMesh& mesh = *cloth.mesh;
     for (const Edge& e : mesh.edges) {
@@ -296,6 +296,12 @@ void SceneRenderer::draw(const RenderView& view, const OrbitCamera& camera, int 
       put3(p, o.vertices[v]);
       sharpPoints.insert(sharpPoints.end(), p, p + 3);
     }
+    for (const auto& e : o.highlightEdges) appendSegment(highlightEdges, o.vertices[e[0]], o.vertices[e[1]]);
+    for (int v : o.highlightVertices) {
+      float p[3];
+      put3(p, o.vertices[v]);
+      highlightPoints.insert(highlightPoints.end(), p, p + 3);
+    }
   }
   gl.flat.use();
   glUniformMatrix4fv(gl.flat.uniform("uViewProjection"), 1, GL_FALSE, viewProjection.data());
@@ -308,6 +314,14 @@ void SceneRenderer::draw(const RenderView& view, const OrbitCamera& camera, int 
   gl.drawFlat(sharpPoints, GL_POINTS);
   glUniform3f(colour, 0.05f, 0.70f, 0.10f);
   gl.drawFlat(cut, GL_LINES);
+  // The editor's hover highlight: wider and amber, so it reads on a red (already sharp) edge too.
+  if (!highlightEdges.empty() || !highlightPoints.empty()) {
+    glLineWidth(2.0f * settings_.lineWidth);
+    glPointSize(4.0f * settings_.lineWidth + 2.0f);
+    glUniform3f(colour, 1.0f, 0.65f, 0.0f);
+    gl.drawFlat(highlightEdges, GL_LINES);
+    gl.drawFlat(highlightPoints, GL_POINTS);
+  }
   glBindVertexArray(0);
   // Wide lines are optional in a core context; a driver that refuses them draws 1 px lines.
   while (glGetError() != GL_NO_ERROR) {

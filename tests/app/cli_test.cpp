@@ -54,7 +54,7 @@ class WeftCli : public ::testing::Test {
   // as `env -u DISPLAY` or `xvfb-run`. Pictures come from llvmpipe, as in the renderer's tests.
   Result weft(const std::string& arguments, const std::string& environment = "") const {
     const fs::path log = root_ / "output.txt";
-    const std::string command = "cd '" + work().string() + "' && GALLIUM_DRIVER=llvmpipe WEFT_AUTOSAVE_DIR='" + (root_ / "autosave").string() + "' " + environment + " '" +
+    const std::string command = "cd '" + work().string() + "' && GALLIUM_DRIVER=llvmpipe WEFT_AUTOSAVE_DIR='" + (root_ / "autosave").string() + "' WEFT_CONFIG_DIR='" + (root_ / "config").string() + "' " + environment + " '" +
                                 std::string(WEFT_BINARY) + "' " + arguments +
                                 " > '" + log.string() + "' 2>&1";
     const int status = std::system(command.c_str());
@@ -375,7 +375,7 @@ TEST_F(WeftCli, EditInAWindowStopsOnANonFiniteStateWithoutCrashing) {
   // up within a few frames; the window keeps showing the last state until --frames is reached).
   const Result r = weft("edit " + quoted(kHangingSheet) +
                             " --set 'cloths.0.mesh.grid.resolution=[8,8]' --set solver.integrator=symplectic_euler"
-                            " --set cloths.0.material=isotropic-stiff --frames 60",
+                            " --set cloths.0.material=isotropic-stiff --frames 60 --play",
                         virtualDisplay());
   EXPECT_EQ(r.exitCode, 3) << r.output;
   EXPECT_NE(r.output.find("became non-finite"), std::string::npos) << r.output;

@@ -23,6 +23,7 @@
 #include "headless_gl_context.h"
 #include "render_view.h"
 #include "scene_renderer.h"
+#include "support/editor_panels_fixture.h"
 #include "support/imgui_harness.h"
 #include "support/snapshot.h"
 #include "support/temp_dir.h"
@@ -35,53 +36,9 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 
 constexpr double kPi = 3.14159265358979323846;
-constexpr int kWidth = 1440;
-constexpr int kHeight = 900;
-
-fs::path copyScene(const test::TempDir& dir, const std::string& preset, int resolution) {
-  std::ifstream in(fs::path(WEFT_SOURCE_DIR) / "presets" / "scenes" / (preset + ".json"));
-  json scene = json::parse(in);
-  scene["cloths"][0]["mesh"]["grid"]["resolution"] = json::array({resolution, resolution});
-  return dir.write("scenes/" + preset + ".json", scene.dump(2));
-}
-
-class EditorPanelsTest : public ::testing::Test {
- protected:
-  static void SetUpTestSuite() {
-    setenv("GALLIUM_DRIVER", "llvmpipe", 1);
-    setenv("LP_NATIVE_VECTOR_WIDTH", "128", 1);
-    try {
-      context_ = std::make_unique<ui::HeadlessGlContext>();
-    } catch (const ui::GlContextError& e) {
-      skipReason_ = std::string("headless OpenGL (EGL surfaceless) cannot start here: ") + e.what();
-    }
-  }
-  static void TearDownTestSuite() { context_.reset(); }
-
-  void SetUp() override {
-    if (!context_) GTEST_SKIP() << skipReason_;
-    scene_ = copyScene(dir_, "ball-into-sheet-table4.1-cloth2", 8);
-    session_ = std::make_unique<EditorSession>(scene_);
-    session_->paused = true;
-    imgui_ = std::make_unique<test::HeadlessImGui>(kWidth, kHeight);
-    ui_.panels.probe = &probe_;
-    imgui_->frame(drawUi());  // lays the panels out and records where each widget is
-  }
-  void TearDown() override { imgui_.reset(); }
-
-  std::function<void()> drawUi() {
-    return [this] { drawEditorUi(*session_, ui_); };
-  }
-
-  static inline std::unique_ptr<ui::HeadlessGlContext> context_;
-  static inline std::string skipReason_;
-  test::TempDir dir_;
-  fs::path scene_;
-  std::unique_ptr<EditorSession> session_;
-  std::unique_ptr<test::HeadlessImGui> imgui_;
-  EditorUi ui_;
-  WidgetProbe probe_;
-};
+using test::EditorPanelsTest;
+using test::kHeight;
+using test::kWidth;
 
 TEST_F(EditorPanelsTest, TypingATearTableEntryChangesTheRequiredStrength) {
   const TearTable before = *session_->scene().cloths[0].material.tearTable;

@@ -2,6 +2,7 @@
 // validates them, applies them live or asks for a reset, undoes them, plays and saves.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -19,6 +20,9 @@
 
 namespace weft::editor {
 namespace {
+
+// A displayed frame as long as the hanging sheet's output frame (1/30 s).
+constexpr double kOutputFrame = 1.0 / 30.0;
 
 namespace fs = std::filesystem;
 using nlohmann::json;
@@ -146,7 +150,7 @@ TEST(EditorSession, AnInvalidEditIsRefusedWithTheReadersMessageAndChangesNothing
 TEST(EditorSession, AWeftEditAppliesLiveAndUndoRestoresIt) {
   test::TempDir dir;
   EditorSession session(smallScene(dir, "hanging-sheet"));
-  session.advanceFrame();
+  session.advanceFrame(kOutputFrame);
   const long long steps = session.world().stepCount();
   ASSERT_GT(steps, 0);
   ASSERT_TRUE(session.edit(withWeftAngle(session.json(), 0, 30.0), "weft angle").accepted);
@@ -165,7 +169,7 @@ TEST(EditorSession, AWeftEditAppliesLiveAndUndoRestoresIt) {
 TEST(EditorSession, AResolutionEditWaitsForAReset) {
   test::TempDir dir;
   EditorSession session(smallScene(dir, "hanging-sheet", 8));
-  session.advanceFrame();
+  session.advanceFrame(kOutputFrame);
   json next = session.json();
   next["cloths"][0]["mesh"]["grid"]["resolution"] = json::array({6, 6});
   ASSERT_TRUE(session.edit(next, "resolution").accepted);
@@ -177,21 +181,39 @@ TEST(EditorSession, AResolutionEditWaitsForAReset) {
   EXPECT_EQ(session.world().stepCount(), 0);
 }
 
-TEST(EditorSession, PlaybackRunsAFramePerDisplayedFramePausesStepsAndScalesBySpeed) {
+TEST(EditorSession, PlaybackRunsInRealTimePausesStepsAndScalesBySpeed) {
   test::TempDir dir;
   EditorSession session(smallScene(dir, "hanging-sheet"));
   const int perFrame = stepsPerFrame(session.scene());
-  session.advanceFrame();
+  session.advanceFrame(kOutputFrame);
   EXPECT_EQ(session.world().stepCount(), perFrame);
   session.paused = true;
-  session.advanceFrame();
+  session.advanceFrame(kOutputFrame);
   EXPECT_EQ(session.world().stepCount(), perFrame);
   session.stepOnce();
   EXPECT_EQ(session.world().stepCount(), perFrame + 1);
   session.paused = false;
   session.speed = 0.5;
-  for (int i = 0; i < 4; ++i) session.advanceFrame();
+  for (int i = 0; i < 4; ++i) session.advanceFrame(kOutputFrame);
   EXPECT_EQ(session.world().stepCount(), perFrame + 1 + 2 * perFrame) << "half speed: half the steps";
+}
+
+// A heavy scene cannot keep up: a frame owes at most kMaxFrameSeconds, and the meter shows the
+// speed achieved, not the one asked for.
+TEST(EditorSession, TheMeterShowsTheSpeedAchievedWhenFramesAreSlow) {
+  test::TempDir dir;
+  EditorSession session(smallScene(dir, "hanging-sheet"));
+  const double dt = session.scene().solver.dt;
+  for (int i = 0; i < 2; ++i) session.advanceFrame(0.5);  // frames of half a second each
+  EXPECT_EQ(session.world().stepCount(), 2 * std::lround(EditorSession::kMaxFrameSeconds / dt));
+  EXPECT_NEAR(session.meter().achievedSpeed(), EditorSession::kMaxFrameSeconds / 0.5, 1e-9)
+      << "1.00x asked, 0.20x achieved";
+  EXPECT_NEAR(session.meter().framesPerSecond(), 2.0, 1e-9);
+  EXPECT_GT(session.meter().msPerStep(), 0.0);
+  const std::string readout = playbackReadout(session.meter(), session.speed, session.paused);
+  EXPECT_NE(readout.find("target 1.00x"), std::string::npos) << readout;
+  EXPECT_NE(readout.find("achieved 0.20x real time"), std::string::npos) << readout;
+  EXPECT_NE(readout.find(" fps"), std::string::npos) << readout;
 }
 
 TEST(EditorSession, ANonFiniteStateStopsPlaybackUntilReset) {
@@ -202,11 +224,11 @@ TEST(EditorSession, ANonFiniteStateStopsPlaybackUntilReset) {
   scene["cloths"][0]["material"] = "isotropic-stiff";
   std::ofstream(file) << scene.dump(2);
   EditorSession session(file);
-  for (int frame = 0; frame < 300 && !session.stopped(); ++frame) session.advanceFrame();
+  for (int frame = 0; frame < 300 && !session.stopped(); ++frame) session.advanceFrame(kOutputFrame);
   ASSERT_TRUE(session.stopped()) << "still finite after 300 frames";
   EXPECT_NE(session.status.find("non-finite"), std::string::npos) << session.status;
   const long long steps = session.world().stepCount();
-  session.advanceFrame();
+  session.advanceFrame(kOutputFrame);
   EXPECT_EQ(session.world().stepCount(), steps);
   session.reset();
   EXPECT_FALSE(session.stopped());

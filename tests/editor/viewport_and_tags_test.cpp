@@ -21,6 +21,8 @@
 namespace weft::editor {
 namespace {
 
+constexpr double kOutputFrame = 1.0 / 30.0;  // one displayed frame
+
 namespace fs = std::filesystem;
 using nlohmann::json;
 
@@ -57,21 +59,21 @@ TEST(ViewportInteraction, APressOnTheClothGrabsItADragMovesTheTargetAReleaseLets
   ui::MouseState mouse;
   mouse.x = 400;
   mouse.y = 300;  // the centre of an 800 x 600 view: the sheet's middle
-  interaction.update(*s.session, s.camera, mouse, false, 800, 600);
+  interaction.update(*s.session, s.camera, mouse, {}, 800, 600);
   ASSERT_FALSE(s.session->world().grabState());
   mouse.left = true;
-  EXPECT_TRUE(interaction.update(*s.session, s.camera, mouse, false, 800, 600)) << "the press is taken from the camera";
+  EXPECT_TRUE(interaction.update(*s.session, s.camera, mouse, {}, 800, 600)) << "the press is taken from the camera";
   const auto grab = s.session->world().grabState();
   ASSERT_TRUE(grab);
   const Vec3 start = grab->spring.target;
   EXPECT_NEAR(start.z(), 0.0, 1e-9) << "on the sheet";
   mouse.y = 200;  // up the screen: the target rises
-  interaction.update(*s.session, s.camera, mouse, false, 800, 600);
+  interaction.update(*s.session, s.camera, mouse, {}, 800, 600);
   EXPECT_GT(s.session->world().grabState()->spring.target.y(), start.y() + 0.1);
   EXPECT_NEAR(s.session->world().grabState()->spring.target.z(), 0.0, 1e-9) << "dragged in the plane facing the camera";
-  s.session->advanceFrame();
+  s.session->advanceFrame(kOutputFrame);
   mouse.left = false;
-  interaction.update(*s.session, s.camera, mouse, false, 800, 600);
+  interaction.update(*s.session, s.camera, mouse, {}, 800, 600);
   EXPECT_FALSE(s.session->world().grabState());
 }
 
@@ -81,9 +83,9 @@ TEST(ViewportInteraction, APressBesideTheClothLeavesTheMouseToTheCamera) {
   ui::MouseState mouse;
   mouse.x = 5;
   mouse.y = 5;
-  interaction.update(*s.session, s.camera, mouse, false, 800, 600);
+  interaction.update(*s.session, s.camera, mouse, {}, 800, 600);
   mouse.left = true;
-  EXPECT_FALSE(interaction.update(*s.session, s.camera, mouse, false, 800, 600));
+  EXPECT_FALSE(interaction.update(*s.session, s.camera, mouse, {}, 800, 600));
   EXPECT_FALSE(s.session->world().grabState());
 }
 
@@ -212,15 +214,39 @@ TEST(ToolTags, AClickOnAToolEdgeInTagModeTogglesItSharp) {
   ui::MouseState mouse;
   mouse.x = at.x;
   mouse.y = at.y;
-  interaction.update(*s.session, camera, mouse, false, 800, 600, &tags);
+  interaction.update(*s.session, camera, mouse, {}, 800, 600, &tags);
   mouse.left = true;
-  EXPECT_TRUE(interaction.update(*s.session, camera, mouse, false, 800, 600, &tags));
+  EXPECT_TRUE(interaction.update(*s.session, camera, mouse, {}, 800, 600, &tags));
   const SharpTags after = tags.tags();
   const bool edgeTagged = std::find(after.edges.begin(), after.edges.end(), edge) != after.edges.end();
   const bool endTagged = std::find(after.vertices.begin(), after.vertices.end(), edge[0]) != after.vertices.end() ||
                          std::find(after.vertices.begin(), after.vertices.end(), edge[1]) != after.vertices.end();
   EXPECT_TRUE(edgeTagged || endTagged) << "the click lands on the edge (or, on a short edge, its nearer end)";
   EXPECT_TRUE(tags.document().dirty());
+}
+
+TEST(ToolTags, AShiftDragBoxTagsTheEdgesInsideAsOneStep) {
+  SwordScene s;
+  ToolTagEditor tags(*s.session, 0);
+  const SharpTags before = tags.tags();
+  ui::OrbitCamera camera = ui::frameBox(Vec3(-0.3, 0.0, -1.0), Vec3(0.3, 1.2, 1.2), 800.0 / 600.0, 90.0, 10.0);
+  ViewportInteraction interaction;
+  ui::MouseState mouse;
+  mouse.x = 1;
+  mouse.y = 1;
+  interaction.update(*s.session, camera, mouse, {false, true}, 800, 600, &tags);
+  mouse.left = true;
+  EXPECT_TRUE(interaction.update(*s.session, camera, mouse, {false, true}, 800, 600, &tags)) << "the box takes the mouse";
+  mouse.x = 799;
+  mouse.y = 599;
+  interaction.update(*s.session, camera, mouse, {false, true}, 800, 600, &tags);
+  ASSERT_TRUE(interaction.box());
+  mouse.left = false;
+  interaction.update(*s.session, camera, mouse, {false, true}, 800, 600, &tags);
+  EXPECT_FALSE(interaction.box());
+  EXPECT_GT(tags.tags().edges.size(), before.edges.size()) << s.session->status;
+  tags.undo(*s.session);
+  EXPECT_EQ(tags.tags().edges, before.edges) << "one undo step";
 }
 
 // Frames until the first tear (or `frames` when none), pulling the hanging sheet's middle down
@@ -236,13 +262,13 @@ int framesToFirstTear(bool pull, int frames) {
   mouse.x = 400;
   mouse.y = 300;
   mouse.left = pull;
-  interaction.update(*s.session, s.camera, mouse, false, 800, 600);
+  interaction.update(*s.session, s.camera, mouse, {}, 800, 600);
   if (pull) EXPECT_TRUE(s.session->world().grabState());
   for (int frame = 0; frame < frames; ++frame) {
     if (s.session->world().tearStats().tears > 0) return frame;
     mouse.y = 300 + 8 * frame;  // down the screen, much further than the sheet can stretch
-    interaction.update(*s.session, s.camera, mouse, false, 800, 600);
-    s.session->advanceFrame();
+    interaction.update(*s.session, s.camera, mouse, {}, 800, 600);
+    s.session->advanceFrame(kOutputFrame);
   }
   return frames;
 }

@@ -19,7 +19,8 @@ namespace weft::test {
 
 class HeadlessImGui {
  public:
-  static constexpr int kEnterKey = 257;  // any free index of io.KeysDown, mapped to ImGuiKey_Enter
+  static constexpr int kEnterKey = 257;   // any free index of io.KeysDown, mapped to ImGuiKey_Enter
+  static constexpr int kEscapeKey = 256;  // likewise for ImGuiKey_Escape
 
   HeadlessImGui(int width, int height) : width_(width), height_(height), framebuffer_(width, height, 1) {
     IMGUI_CHECKVERSION();
@@ -28,6 +29,7 @@ class HeadlessImGui {
     io.IniFilename = nullptr;
     io.DisplaySize = ImVec2(static_cast<float>(width), static_cast<float>(height));
     io.KeyMap[ImGuiKey_Enter] = kEnterKey;
+    io.KeyMap[ImGuiKey_Escape] = kEscapeKey;
     ImGui::StyleColorsLight();
     ImGui_ImplOpenGL3_Init("#version 330 core");
   }
@@ -75,6 +77,15 @@ class HeadlessImGui {
     io.KeysDown[kEnterKey] = true;
     frame(drawUi);
     io.KeysDown[kEnterKey] = false;
+    frame(drawUi);
+  }
+
+  // A key tapped: down in one frame, up in the next.
+  void tap(int key, const std::function<void()>& drawUi) {
+    ImGuiIO& io = ImGui::GetIO();
+    io.KeysDown[key] = true;
+    frame(drawUi);
+    io.KeysDown[key] = false;
     frame(drawUi);
   }
 

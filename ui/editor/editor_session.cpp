@@ -1,6 +1,9 @@
 #include "editor_session.h"
 
+#include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <limits>
 
 #include "scene/scene_json.h"
 #include "sim/finite_state.h"
@@ -33,9 +36,11 @@ EditResult EditorSession::edit(nlohmann::json next, const std::string& label, co
   try {
     (void)parse(next, document_.file());
   } catch (const InputError& e) {
-    status = "not applied: " + std::string(e.what());
+    status = label + " not applied: " + std::string(e.what());
+    refusal_ = Refusal{label, e.what()};
     return {false, status};
   }
+  refusal_.reset();
   document_.history().commit(std::move(next), label, mergeKey);
   applyDocument(label);
   return {true, status};
@@ -43,12 +48,14 @@ EditResult EditorSession::edit(nlohmann::json next, const std::string& label, co
 
 void EditorSession::undo() {
   const std::string label = document_.history().undoLabel();
+  refusal_.reset();
   document_.history().undo();
   applyDocument("undo " + label);
 }
 
 void EditorSession::redo() {
   const std::string label = document_.history().redoLabel();
+  refusal_.reset();
   document_.history().redo();
   applyDocument("redo " + label);
 }
@@ -80,9 +87,14 @@ void EditorSession::rebuildWorld() {
   pendingSteps_ = 0.0;
 }
 
-void EditorSession::advance(long long steps) {
-  for (long long s = 0; s < steps && !stopped_; ++s) {
+void EditorSession::advance(long long steps, double budgetSeconds) {
+  double spent = 0.0;
+  for (long long s = 0; s < steps && !stopped_ && spent < budgetSeconds; ++s) {
+    const auto start = std::chrono::steady_clock::now();
     world_->step();
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    spent += seconds;
+    meter_.addSteps(1, 1000.0 * seconds);
     if (!stateIsFinite(*world_)) {
       stopped_ = true;
       status = "the simulation became non-finite at t = " + std::to_string(world_->time()) +
@@ -91,16 +103,21 @@ void EditorSession::advance(long long steps) {
   }
 }
 
-void EditorSession::advanceFrame() {
-  if (paused || stopped_) return;
-  pendingSteps_ += std::max(speed, 0.0) * stepsPerFrame(world_->scene());
-  const double whole = std::floor(pendingSteps_);
-  pendingSteps_ -= whole;
-  advance(static_cast<long long>(whole));
+void EditorSession::advanceFrame(double wallSeconds) {
+  const double before = world_->time();
+  if (!paused && !stopped_) {
+    const double owed = std::max(speed, 0.0) * std::clamp(wallSeconds, 0.0, kMaxFrameSeconds);
+    pendingSteps_ += owed / world_->scene().solver.dt;
+    // 1e-9: (1/30) / (1/60) must be 2 steps, not 1.999... of them.
+    const double whole = std::floor(pendingSteps_ + 1e-9);
+    pendingSteps_ = std::max(pendingSteps_ - whole, 0.0);
+    advance(static_cast<long long>(whole), kStepBudgetSeconds);  // steps over budget are dropped, not owed
+  }
+  meter_.frame(wallSeconds, std::max(world_->time() - before, 0.0));
 }
 
 void EditorSession::stepOnce() {
-  if (!stopped_) advance(1);
+  if (!stopped_) advance(1, std::numeric_limits<double>::infinity());
 }
 
 void EditorSession::save() {

@@ -13,6 +13,7 @@
 
 #include "editor/autosave.h"
 #include "editor/json_document.h"
+#include "editor/playback_meter.h"
 #include "scene/scene.h"
 #include "sim/world.h"
 
@@ -21,6 +22,13 @@ namespace weft::editor {
 struct EditResult {
   bool accepted = false;
   std::string message;  // why an edit was refused (the reader's message, naming the field)
+};
+
+// The last edit the strict reader refused, kept until the next edit (accepted, undo or redo) so
+// the panel can show it beside the field the user typed into, and the status bar can keep it.
+struct Refusal {
+  std::string label;    // the edit's label, which names the field ("time step", "area density")
+  std::string message;  // the reader's message
 };
 
 class EditorSession {
@@ -52,13 +60,20 @@ class EditorSession {
   // when this changes.
   int worldGeneration() const { return worldGeneration_; }
 
-  // Playback: one displayed frame advances `speed` output frames' worth of steps (fractions carry
-  // over to the next frame), unless paused or stopped on a non-finite state.
+  // Playback in real time: a displayed frame that lasted `wallSeconds` advances the simulation by
+  // speed * wallSeconds (whole steps; the fraction of a step carries over), unless paused or
+  // stopped on a non-finite state. A frame owes at most kMaxFrameSeconds of wall time, and steps
+  // stop once they took kStepBudgetSeconds in a frame (after at least one): a heavy scene falls
+  // behind the target speed (the meter says by how much) while the window keeps answering,
+  // instead of taking ever longer frames to catch up.
   bool paused = false;
   double speed = 1.0;
-  void advanceFrame();
+  static constexpr double kMaxFrameSeconds = 0.1;
+  static constexpr double kStepBudgetSeconds = 0.05;
+  void advanceFrame(double wallSeconds);
   void stepOnce();
   bool stopped() const { return stopped_; }
+  const PlaybackMeter& meter() const { return meter_; }
 
   void save();                                   // atomic, keeping the previous file as FILE.bak
   void saveAs(const std::filesystem::path& file);
@@ -68,19 +83,23 @@ class EditorSession {
   void autosave(Autosave& store) const { store.write(document_); }
 
   std::string status;  // the last message for the status bar: what was applied, refused or needs a reset
+  // The last refused edit, until the next edit; none after an accepted one.
+  const std::optional<Refusal>& refusal() const { return refusal_; }
 
  private:
   void applyDocument(const std::string& label);
   void rebuildWorld();
-  void advance(long long steps);
+  void advance(long long steps, double budgetSeconds);
 
   JsonDocument document_;
   Scene scene_;
   std::unique_ptr<World> world_;
   bool resetPending_ = false;
+  std::optional<Refusal> refusal_;
   int worldGeneration_ = 0;
   bool stopped_ = false;
   double pendingSteps_ = 0.0;  // the fraction of a step owed at slow speeds
+  PlaybackMeter meter_;
 };
 
 }  // namespace weft::editor

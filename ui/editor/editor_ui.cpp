@@ -2,7 +2,11 @@
 
 #include <imgui.h>
 
+#include <filesystem>
+#include <system_error>
+
 #include "editor/editor_viewport.h"
+#include "editor/menu_bar.h"
 
 namespace weft::editor {
 
@@ -21,9 +25,31 @@ void drawStatusBar(const EditorSession& session) {
   ImGui::Begin("##status", nullptr,
                ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
                    ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoBringToFrontOnFocus);
-  ImGui::Text("%s%s  |  %s%s", session.document().file().filename().string().c_str(), session.dirty() ? " (unsaved)" : "",
-              session.resetPending() ? "RESET NEEDED to apply the last edit  |  " : "", session.status.c_str());
+  ImGui::Text("%s%s  |  %s", session.document().file().filename().string().c_str(), session.dirty() ? " (unsaved)" : "",
+              session.resetPending() ? "RESET NEEDED to apply the last edit  |  " : "");
+  ImGui::SameLine(0.0f, 0.0f);
+  // A refused edit stays red here until the next edit, whatever else happens meanwhile.
+  if (const auto& refusal = session.refusal()) {
+    ImGui::TextColored(kRefusedColour, "%s not applied: %s", refusal->label.c_str(), refusal->message.c_str());
+  } else {
+    ImGui::TextUnformatted(session.status.c_str());
+  }
   ImGui::End();
+}
+
+// Esc answers the open prompt (as its Cancel or Later button) instead of quitting the editor.
+bool escapePressed() { return ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false); }
+
+// A scene opens paused at t = 0; one line over the viewport says what to press.
+void drawStartHint(const EditorSession& session) {
+  if (!session.paused || session.world().stepCount() != 0) return;
+  const char* hint = "Paused at t = 0:  Space plays, N steps, R resets, F frames";
+  const ImVec2 size = ImGui::CalcTextSize(hint);
+  const float x = 0.5f * (kLeftColumnWidth + ImGui::GetIO().DisplaySize.x - kRightColumnWidth) - 0.5f * size.x;
+  ImDrawList* draw = ImGui::GetBackgroundDrawList();
+  const float y = kMenuBarHeight + 10.0f;
+  draw->AddRectFilled(ImVec2(x - 8, y - 3), ImVec2(x + size.x + 8, y + size.y + 3), IM_COL32(255, 255, 255, 215), 4.0f);
+  draw->AddText(ImVec2(x, y), IM_COL32(30, 30, 30, 255), hint);
 }
 
 // What the user chose at an unsaved-changes prompt.
@@ -50,7 +76,7 @@ UnsavedChoice askAboutUnsavedEdits(EditorSession& session, const char* title, co
     ImGui::SameLine();
     if (ImGui::Button(discardLabel)) choice = UnsavedChoice::Proceed;
     ImGui::SameLine();
-    if (ImGui::Button("Cancel")) choice = UnsavedChoice::Cancel;
+    if (ImGui::Button("Cancel") || escapePressed()) choice = UnsavedChoice::Cancel;
     if (choice != UnsavedChoice::Undecided) ImGui::CloseCurrentPopup();
     ImGui::EndPopup();
   }
@@ -79,21 +105,30 @@ void drawOpenPrompt(EditorSession& session, EditorUi& ui) {
   }
 }
 
-void drawRecoveryPrompt(EditorUi& ui) {
-  if (!ui.recovery || ui.recoveryChoice != RecoveryChoice::Undecided) return;
+// An autosave of the open scene must be recovered or discarded before editing goes on (new edits
+// would otherwise replace it); one of another scene can also wait ("Later", or Esc) and is
+// offered again when that scene is opened, or at the next start.
+void drawRecoveryPrompt(const EditorSession& session, EditorUi& ui) {
+  if (ui.recoveries.empty() || ui.recoveryChoice != RecoveryChoice::Undecided) return;
+  const Recovery& offered = ui.recoveries.front();
+  std::error_code ec;
+  const bool openScene = offered.original == std::filesystem::weakly_canonical(session.document().file(), ec);
   ImGui::OpenPopup("Recover unsaved edits?");
   if (ImGui::BeginPopupModal("Recover unsaved edits?", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
-    ImGui::Text("Weft stopped with unsaved edits to %s (autosaved %s).", ui.recovery->original.string().c_str(),
-                ui.recovery->savedAt.c_str());
-    if (ImGui::Button("Recover them")) {
-      ui.recoveryChoice = RecoveryChoice::Recover;
-      ImGui::CloseCurrentPopup();
-    }
+    ImGui::Text("Weft stopped with unsaved edits to %s", offered.original.string().c_str());
+    ImGui::Text("(autosaved %s).%s", offered.savedAt.c_str(),
+                ui.recoveries.size() > 1 ? "  More autosaves follow." : "");
+    if (ImGui::Button(openScene ? "Recover them" : "Open it with them")) ui.recoveryChoice = RecoveryChoice::Recover;
+    recordWidget(ui.panels, "recovery/recover");
     ImGui::SameLine();
-    if (ImGui::Button("Discard them")) {
-      ui.recoveryChoice = RecoveryChoice::Discard;
-      ImGui::CloseCurrentPopup();
+    if (ImGui::Button("Discard them")) ui.recoveryChoice = RecoveryChoice::Discard;
+    recordWidget(ui.panels, "recovery/discard");
+    if (!openScene) {
+      ImGui::SameLine();
+      if (ImGui::Button("Later (keep them)") || escapePressed()) ui.recoveryChoice = RecoveryChoice::Later;
+      recordWidget(ui.panels, "recovery/later");
     }
+    if (ui.recoveryChoice != RecoveryChoice::Undecided) ImGui::CloseCurrentPopup();
     ImGui::EndPopup();
   }
 }
@@ -106,27 +141,31 @@ void drawEditorUi(EditorSession& session, EditorUi& ui) {
   if (ui.panels.cloth >= cloths) ui.panels.cloth = cloths - 1;
   if (ui.panels.obstacle >= static_cast<int>(session.scene().obstacles.size())) ui.panels.obstacle = -1;
   // Columns as editor_viewport.h lays them out, so the scene shows between them.
+  drawMenuBar(session, ui);
   const float m = kPanelMargin;
   const float left = m, leftWidth = kLeftColumnWidth - 2 * m;
   const float right = ImGui::GetIO().DisplaySize.x - kRightColumnWidth + m;
-  placeNext(left, 8, leftWidth, 290);
+  const float top = kMenuBarHeight + m;
+  placeNext(left, top, leftWidth, 270);
   drawScenePanel(session, ui.panels);
-  placeNext(left, 306, leftWidth, 150);
+  placeNext(left, top + 278, leftWidth, 150);
   drawPlaybackPanel(session, ui.panels);
-  placeNext(left, 464, leftWidth, 230);
+  placeNext(left, top + 436, leftWidth, 230);
   drawSolverPanel(session, ui.panels);
-  placeNext(left, 702, leftWidth, 170);
+  placeNext(left, top + 674, leftWidth, 170);
   drawToolsPanel(session, ui.panels);
-  placeNext(right, 8, kRightColumnWidth - 2 * m, 420);
+  placeNext(right, top, kRightColumnWidth - 2 * m, 400);
   drawMaterialPanel(session, ui.panels);
-  placeNext(right, 436, 250, 430);
+  placeNext(right, top + 408, 250, 430);
   drawTearTablePanel(session, ui.panels);
-  placeNext(right + 256, 436, 204, 260);
+  placeNext(right + 256, top + 408, 204, 260);
   drawWeftPanel(session, ui.panels);
   drawStatusBar(session);
+  drawStartHint(session);
+  // One modal at a time: quitting or opening first; a pending autosave is not lost by either.
   drawQuitPrompt(session, ui);
-  drawOpenPrompt(session, ui);
-  drawRecoveryPrompt(ui);
+  if (ui.quit == QuitPrompt::None) drawOpenPrompt(session, ui);
+  if (ui.quit == QuitPrompt::None && ui.open == OpenPrompt::None) drawRecoveryPrompt(session, ui);
 }
 
 }  // namespace weft::editor

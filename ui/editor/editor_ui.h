@@ -4,6 +4,9 @@
 // between ImGui::NewFrame and ImGui::Render; the platform layer (the GLFW window, or a headless
 // EGL context in tests) owns the frame.
 #include <optional>
+#include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include "editor/autosave.h"
 #include "editor/editor_session.h"
@@ -13,14 +16,22 @@ namespace weft::editor {
 
 enum class QuitPrompt { None, Asking, Confirmed };
 enum class OpenPrompt { None, Asking, Confirmed };
-enum class RecoveryChoice { Undecided, Recover, Discard };
+// What the user chose for the first autosave offered: recover its edits (opening its scene if
+// another is open), discard it, or keep it for later (only for another scene than the open one).
+enum class RecoveryChoice { Undecided, Recover, Discard, Later };
 
 struct EditorUi {
   PanelState panels;
   QuitPrompt quit = QuitPrompt::None;   // the app sets Asking when the window wants to close
   OpenPrompt open = OpenPrompt::None;   // Confirmed: the app opens panels.openRequest
-  std::optional<Recovery> recovery;     // an autosave offered back at start
-  RecoveryChoice recoveryChoice = RecoveryChoice::Undecided;
+  std::vector<Recovery> recoveries;     // autosaves to offer back, the first one shown
+  RecoveryChoice recoveryChoice = RecoveryChoice::Undecided;  // for recoveries.front()
+  // With panels.openRequest: that scene opens with these recovered edits (the workspace sets it).
+  std::optional<nlohmann::json> openRecovered;
+  bool frameScene = false;    // View > Frame the scene: the app re-frames its camera and clears it
+  bool openDialog = false;    // File > Open...
+  bool saveAsDialog = false;  // File > Save as...
+  bool helpOpen = false;      // Help > Mouse and keys
 };
 
 void drawEditorUi(EditorSession& session, EditorUi& ui);

@@ -232,6 +232,15 @@ json withoutObstacle(const json& scene, int obstacle) {
   return out;
 }
 
+json withSharpTagsFile(const json& scene, int obstacle, const std::string& file) {
+  json out = scene;
+  json& obstacles = out.at("obstacles");
+  if (obstacle < 0 || obstacle >= static_cast<int>(obstacles.size())) throw std::out_of_range("no such obstacle");
+  json& mesh = obstacles[static_cast<std::size_t>(obstacle)].at("shape").at("mesh");
+  mesh["sharp_tags"] = file;
+  return out;
+}
+
 json withClothDuplicated(const json& scene, int cloth, const Vec3& offset) {
   json out = scene;
   json copy = clothJson(out, cloth);

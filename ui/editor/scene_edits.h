@@ -56,6 +56,8 @@ nlohmann::json withIsotropicElasticity(const nlohmann::json& scene, const Scene&
 nlohmann::json withObstacleAdded(const nlohmann::json& scene, const std::string& shape, const Vec3& position,
                                  double size);
 nlohmann::json withoutObstacle(const nlohmann::json& scene, int obstacle);
+// A mesh obstacle's sharp tags read from `file` ("sharp_tags", a path relative to the scene's folder).
+nlohmann::json withSharpTagsFile(const nlohmann::json& scene, int obstacle, const std::string& file);
 // A copy of cloth `cloth` moved by `offset` (m), named uniquely.
 nlohmann::json withClothDuplicated(const nlohmann::json& scene, int cloth, const Vec3& offset);
 nlohmann::json withoutCloth(const nlohmann::json& scene, int cloth);  // the last cloth cannot go

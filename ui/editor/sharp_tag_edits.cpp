@@ -1,9 +1,13 @@
 #include "sharp_tag_edits.h"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 #include "contact/obstacle.h"
+#include "editor/installed_data.h"
+#include "editor/scene_edits.h"
 #include "rigid/triangle_mesh.h"
 
 namespace weft::editor {
@@ -27,6 +31,37 @@ SharpTags withEdgeToggled(SharpTags tags, std::array<int, 2> edge) {
     tags.edges.erase(it);
   } else {
     tags.edges.insert(it, edge);
+  }
+  return tags;
+}
+
+std::vector<std::array<int, 2>> edgesSharperThan(const CollisionMesh& mesh, const std::vector<Vec3>& vertices,
+                                                 double degrees) {
+  std::vector<std::vector<int>> faces(mesh.edges.size());
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    for (int e : mesh.triangleEdges[t]) faces[static_cast<std::size_t>(e)].push_back(static_cast<int>(t));
+  }
+  auto normal = [&](int t) {
+    const auto& tri = mesh.triangles[static_cast<std::size_t>(t)];
+    const Vec3 n = (vertices[tri[1]] - vertices[tri[0]]).cross(vertices[tri[2]] - vertices[tri[0]]);
+    return n.norm() > 0.0 ? Vec3(n.normalized()) : Vec3(Vec3::Zero());
+  };
+  const double cosLimit = std::cos(degrees * 3.14159265358979323846 / 180.0);
+  std::vector<std::array<int, 2>> sharp;
+  for (std::size_t e = 0; e < mesh.edges.size(); ++e) {
+    const std::vector<int>& f = faces[e];
+    if (f.empty()) continue;
+    // Two faces: the angle between their normals; more than two (a non-manifold edge) counts as sharp.
+    if (f.size() == 1 || f.size() > 2 || normal(f[0]).dot(normal(f[1])) < cosLimit) sharp.push_back(mesh.edges[e]);
+  }
+  return sharp;
+}
+
+SharpTags withEdgesTagged(SharpTags tags, const std::vector<std::array<int, 2>>& edges) {
+  for (std::array<int, 2> edge : edges) {
+    if (edge[0] > edge[1]) std::swap(edge[0], edge[1]);
+    const auto it = std::lower_bound(tags.edges.begin(), tags.edges.end(), edge);
+    if (it == tags.edges.end() || *it != edge) tags.edges.insert(it, edge);
   }
   return tags;
 }
@@ -95,6 +130,30 @@ void ToolTagEditor::toggleEdge(EditorSession& session, std::array<int, 2> edge) 
          "toggle sharp edge " + std::to_string(edge[0]) + "-" + std::to_string(edge[1]));
 }
 
+int ToolTagEditor::tagEdges(EditorSession& session, const std::vector<std::array<int, 2>>& edges,
+                            const std::string& label) {
+  const SharpTags before = tags();
+  const SharpTags after = withEdgesTagged(before, edges);
+  const int added = static_cast<int>(after.edges.size() - before.edges.size());
+  if (added > 0) commit(session, after, label + " (" + std::to_string(added) + " edges)");
+  return added;
+}
+
+int ToolTagEditor::tagEdgesSharperThan(EditorSession& session, double degrees) {
+  const Obstacle& o = session.world().obstacle(obstacle_);
+  const SharpTags before = tags();
+  const SharpTags after = withEdgesTagged(before, edgesSharperThan(o.topology, o.bodyVertices, degrees));
+  const int added = static_cast<int>(after.edges.size() - before.edges.size());
+  if (added > 0) {
+    char label[80];
+    std::snprintf(label, sizeof label, "tag %d edges sharper than %.0f deg", added, degrees);
+    commit(session, after, label);
+  } else {
+    session.status = "no untagged edge is sharper than " + std::to_string(static_cast<int>(degrees)) + " deg";
+  }
+  return added;
+}
+
 void ToolTagEditor::undo(EditorSession& session) {
   document_.history().undo();
   applyToWorld(session);
@@ -110,6 +169,17 @@ void ToolTagEditor::commit(EditorSession& session, const SharpTags& tags, const 
   applyToWorld(session);
   session.status = label + " (save the tags to keep them)";
 }
+
+std::filesystem::path ToolTagEditor::saveBesideScene(EditorSession& session) {
+  const ObstacleSpec& spec = session.scene().obstacles.at(static_cast<std::size_t>(obstacle_));
+  const std::filesystem::path name = sharpTagsPathFor(spec.shape.meshPath).filename();
+  const std::filesystem::path file = session.document().file().parent_path() / name;
+  document_.saveAs(file);
+  session.edit(withSharpTagsFile(session.json(), obstacle_, name.string()), "sharp tags of " + name_ + " beside the scene");
+  return file;
+}
+
+bool ToolTagEditor::savesIntoInstalledData() const { return isInstalledData(document_.file()); }
 
 void ToolTagEditor::applyToWorld(EditorSession& session) const {
   session.world().setObstacleSharpTags(obstacle_, tags());

@@ -7,18 +7,27 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
 #include "editor/editor_session.h"
 #include "editor/json_document.h"
+#include "collision/collision_mesh.h"
 #include "rigid/sharp_tags.h"
+#include "util/types.h"
 
 namespace weft::editor {
 
 // Pure edits, in canonical form (sorted, no repeats; an edge as {a, b} with a < b).
 SharpTags withVertexToggled(SharpTags tags, int vertex);
 SharpTags withEdgeToggled(SharpTags tags, std::array<int, 2> edge);
+// The edges where the mesh's two faces meet at more than `degrees` (the angle between their
+// normals): a blade's edge and tip, not its flat sides. An edge with one face (an open border) is
+// included; `vertices` are the mesh's positions in any fixed frame.
+std::vector<std::array<int, 2>> edgesSharperThan(const CollisionMesh& mesh, const std::vector<Vec3>& vertices,
+                                                 double degrees);
+SharpTags withEdgesTagged(SharpTags tags, const std::vector<std::array<int, 2>>& edges);
 nlohmann::json sharpTagsJson(const SharpTags& tags);     // the file's format
 SharpTags sharpTagsFromJson(const nlohmann::json& json);  // of what sharpTagsJson wrote
 
@@ -38,9 +47,21 @@ class ToolTagEditor {
 
   void toggleVertex(EditorSession& session, int vertex);
   void toggleEdge(EditorSession& session, std::array<int, 2> edge);
+  // Tags every edge sharper than `degrees` (edgesSharperThan), as one undo step. Returns how many
+  // edges were newly tagged.
+  int tagEdgesSharperThan(EditorSession& session, double degrees);
+  // Tags `edges` sharp (a box select), as one undo step labelled `label`. Returns how many were
+  // newly tagged.
+  int tagEdges(EditorSession& session, const std::vector<std::array<int, 2>>& edges, const std::string& label);
   void undo(EditorSession& session);
   void redo(EditorSession& session);
   void save() { document_.save(); }  // atomic, FILE.bak kept
+  // Saves the tags beside the scene instead (SCENE_FOLDER/MESH.sharp.json) and points the scene's
+  // obstacle at that file ("sharp_tags"), so a shipped tool's file is left alone and other scenes
+  // using the tool are not changed. Returns the file written.
+  std::filesystem::path saveBesideScene(EditorSession& session);
+  // Whether save() would write into Weft's installed assets (a shipped tool's tags).
+  bool savesIntoInstalledData() const;
   // After the world was rebuilt (a reset): its obstacle has the file's tags again; puts the
   // document's (possibly unsaved) ones back. False when the obstacle at this index is no longer
   // the tool (it was removed from the scene): nothing is applied.

@@ -21,7 +21,7 @@ Vec3 ViewportInteraction::onDragPlane(const ui::OrbitCamera& camera, const Vec3&
 }
 
 bool ViewportInteraction::update(EditorSession& session, const ui::OrbitCamera& camera, const ui::MouseState& mouse,
-                                 bool altHeld, int width, int height, ToolTagEditor* tags) {
+                                 ViewportKeys keys, int width, int height, ToolTagEditor* tags) {
   Vec3 origin, dir;
   ui::cameraRay(camera, mouse.x, mouse.y, width, height, origin, dir);
   World& world = session.world();
@@ -29,27 +29,32 @@ bool ViewportInteraction::update(EditorSession& session, const ui::OrbitCamera& 
   const bool released = !mouse.left && wasDown_;
   wasDown_ = mouse.left;
 
+  // In tag mode, what a click would toggle, found (and shown) before the click.
+  hovered_.reset();
+  if (tags != nullptr && mode_ != Mode::Grab && mode_ != Mode::DragTool && mode_ != Mode::Box) {
+    TagPickSettings pick;
+    pick.edgePixels = settings_.tagTolerancePixels;
+    hovered_ = pickTagTarget(world, tags->obstacle(), camera, mouse.x, mouse.y, width, height, pick);
+  }
+
   if (pressed) {
     mode_ = Mode::Orbit;  // unless the press lands on something below
-    if (tags != nullptr) {
-      // A world distance that looks like tagTolerancePixels at the distance of what was hit.
-      const double perPixel = 2.0 * std::tan(camera.fovYDeg * kPi / 360.0) / std::max(height, 1);
-      if (auto hit = pickObstacleFeature(world, origin, dir, 1e9)) {
-        const double tolerance = settings_.tagTolerancePixels * perPixel * (hit->point - origin).norm();
-        if (hit->obstacle == tags->obstacle()) {
-          if (auto near = pickObstacleFeature(world, origin, dir, tolerance)) {
-            if (near->vertex != kNone) {
-              tags->toggleVertex(session, near->vertex);
-            } else if (near->edge != kNone) {
-              tags->toggleEdge(session, world.obstacle(near->obstacle).topology.edges[static_cast<std::size_t>(near->edge)]);
-            }
-          }
-          mode_ = Mode::Idle;
-          return true;
-        }
-      }
+    if (tags != nullptr && keys.shift) {
+      mode_ = Mode::Box;
+      box_ = DragBox{mouse.x, mouse.y, mouse.x, mouse.y};
+      hovered_.reset();
+      return true;
     }
-    if (altHeld) {
+    if (hovered_) {
+      if (hovered_->isVertex()) {
+        tags->toggleVertex(session, hovered_->vertex);
+      } else {
+        tags->toggleEdge(session, hovered_->edge);
+      }
+      mode_ = Mode::Idle;
+      return true;
+    }
+    if (keys.alt) {
       if (auto hit = pickObstacleFeature(world, origin, dir, 0.0)) {
         const Obstacle& o = world.obstacle(hit->obstacle);
         if (o.motion == ObstacleMotion::Kinematic) {
@@ -67,6 +72,20 @@ bool ViewportInteraction::update(EditorSession& session, const ui::OrbitCamera& 
       world.grab(hit->cloth, hit->vertex, hit->point, settings_.grabStiffness);
       return true;
     }
+  }
+
+  if (released && mode_ == Mode::Box) {
+    mode_ = Mode::Idle;
+    if (tags != nullptr && std::abs(box_.x1 - box_.x0) > 2 && std::abs(box_.y1 - box_.y0) > 2) {
+      const auto edges = edgesInBox(world, tags->obstacle(), camera, box_.x0, box_.y0, box_.x1, box_.y1, width, height);
+      if (tags->tagEdges(session, edges, "tag the edges in a box") == 0) session.status = "no untagged edge in the box";
+    }
+    return true;
+  }
+  if (mode_ == Mode::Box) {
+    box_.x1 = mouse.x;
+    box_.y1 = mouse.y;
+    return true;
   }
 
   if (released) {

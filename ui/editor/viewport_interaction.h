@@ -5,12 +5,14 @@
 // positions (window pixels) into rays and calls the World's interaction API, so tests drive it.
 //
 // Left press on a cloth grabs its nearest vertex; on a kinematic tool with Alt held, drags the
-// tool; in tag mode, on a tool, toggles the nearest vertex (or else edge) sharp. A press on
-// nothing leaves the mouse to the orbit camera.
+// tool; in tag mode, toggles the tool's feature under the cursor (tag_picking.h: the one
+// highlighted before the click, an edge when the cursor is on its segment). A press on nothing
+// leaves the mouse to the orbit camera.
 #include <optional>
 
 #include "editor/editor_session.h"
 #include "editor/sharp_tag_edits.h"
+#include "editor/tag_picking.h"
 #include "orbit_camera.h"
 #include "window_input.h"
 
@@ -24,6 +26,17 @@ struct ViewportSettings {
   double tagTolerancePixels = 8.0;     // how near a vertex or edge a click must be to tag it
 };
 
+// The modifier keys held during a frame.
+struct ViewportKeys {
+  bool alt = false;    // Alt + drag moves a kinematic tool
+  bool shift = false;  // in tag mode, Shift + drag draws a box that tags every edge inside
+};
+
+// A screen rectangle being dragged out, pixels in the viewport.
+struct DragBox {
+  double x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+};
+
 class ViewportInteraction {
  public:
   explicit ViewportInteraction(ViewportSettings settings = {}) : settings_(settings) {}
@@ -31,16 +44,20 @@ class ViewportInteraction {
   // Handles a frame's mouse state in a viewport of width x height pixels. Returns true when the
   // mouse is taken (grabbing, dragging a tool, tagging): the orbit camera must not use it.
   // `tagMode`: clicks on a tool toggle sharp tags in `tags` (the document of that tool's tags).
-  bool update(EditorSession& session, const ui::OrbitCamera& camera, const ui::MouseState& mouse, bool altHeld,
+  bool update(EditorSession& session, const ui::OrbitCamera& camera, const ui::MouseState& mouse, ViewportKeys keys,
               int width, int height, ToolTagEditor* tags = nullptr);
 
   // Throws a ball from the eye through the point (x, y) of the viewport.
   void throwBall(EditorSession& session, const ui::OrbitCamera& camera, double x, double y, int width, int height) const;
 
   bool grabbing() const { return mode_ == Mode::Grab; }
+  // In tag mode: the tool's feature a click would toggle now (drawn highlighted), if any.
+  const std::optional<TagTarget>& hovered() const { return hovered_; }
+  // The box being dragged in tag mode (Shift + drag), for the app to draw.
+  std::optional<DragBox> box() const { return mode_ == Mode::Box ? std::optional<DragBox>(box_) : std::nullopt; }
 
  private:
-  enum class Mode { Idle, Grab, DragTool, Orbit };
+  enum class Mode { Idle, Grab, DragTool, Orbit, Box };
   // Where the cursor's ray meets the plane through `anchor` facing the camera.
   static Vec3 onDragPlane(const ui::OrbitCamera& camera, const Vec3& anchor, const Vec3& origin, const Vec3& dir);
 
@@ -50,6 +67,8 @@ class ViewportInteraction {
   Vec3 anchor_ = Vec3::Zero();     // grabbed point or tool point under the cursor at the press
   Vec3 toolOffset_ = Vec3::Zero(); // tool position minus anchor
   int tool_ = -1;
+  std::optional<TagTarget> hovered_;
+  DragBox box_;
 };
 
 }  // namespace weft::editor

@@ -10,6 +10,7 @@
 #include <imgui.h>
 
 #include "editor/editor_session.h"
+#include "editor/editor_settings.h"
 #include "editor/headless_recorder.h"
 #include "editor/sharp_tag_edits.h"
 
@@ -32,6 +33,12 @@ struct PanelState {
   char openPath[256] = "";       // the scene panel's "open" file
   WidgetProbe* probe = nullptr;  // tests only
   char newPresetName[64] = "";   // the material panel's "save as preset" name
+  char presetFolder[512] = "";   // ... and folder, filled from settings when its dialog opens
+  bool presetDialog = false;     // the "save as preset" dialog is open
+  bool writeInstalled = false;   // the user agreed to write into Weft's installed presets/assets
+  EditorSettings settings;       // remembered between runs (the app loads and saves them)
+  bool tagsDialog = false;       // the tools panel asks where the tags of a shipped tool go
+  double sharperThanDeg = 60.0;  // the tools panel's "tag edges sharper than" angle
   std::optional<ToolTagEditor> tool;  // the tool whose sharp tags the tools panel edits
   int toolGeneration = -1;            // the world generation its tags were applied to
   bool tagMode = false;               // clicks on the tool in the viewport toggle sharp tags
@@ -50,6 +57,11 @@ void recordWidget(PanelState& state, const std::string& id);
 // A number the user types: selected whole on click, taken when Enter is pressed, and only when
 // finite. True when a new value is in `value` (each panel still checks its own range).
 bool numberField(const char* label, double& value, const char* format, float width);
+
+// Under the field just drawn, in red: the reader's message when the last refused edit was the one
+// labelled `label` (until the next edit). Every field that can be refused calls it. True when shown.
+bool showRefusal(const EditorSession& session, const std::string& label);
+extern const ImVec4 kRefusedColour;
 
 void drawScenePanel(EditorSession& session, PanelState& state);
 void drawMaterialPanel(EditorSession& session, PanelState& state);

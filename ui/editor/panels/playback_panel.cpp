@@ -1,4 +1,5 @@
-// Playback: play, pause, single step, reset and speed.
+// Playback: play, pause, single step, reset and the target speed, with what playback achieves
+// (real-time factor, ms a step, frame rate) measured beside it.
 #include <algorithm>
 #include <filesystem>
 #include <string>
@@ -25,7 +26,16 @@ void drawPlaybackPanel(EditorSession& session, PanelState& state) {
   recordWidget(state, "play/reset");
   float speed = static_cast<float>(session.speed);
   ImGui::SetNextItemWidth(160);
-  if (ImGui::SliderFloat("speed", &speed, 0.05f, 4.0f, "%.2fx", ImGuiSliderFlags_Logarithmic)) session.speed = speed;
+  if (ImGui::SliderFloat("target speed", &speed, 0.05f, 4.0f, "%.2fx", ImGuiSliderFlags_Logarithmic)) {
+    session.speed = speed;
+  }
+  // The target is what was asked for; the scene may not keep up with it.
+  const PlaybackMeter& meter = session.meter();
+  const bool behind = !session.paused && meter.measured() && meter.achievedSpeed() < 0.9 * session.speed;
+  if (behind) ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.75f, 0.35f, 0.0f, 1.0f));
+  ImGui::TextWrapped("%s", playbackReadout(meter, session.speed, session.paused).c_str());
+  if (behind) ImGui::PopStyleColor();
+  recordWidget(state, "play/readout");
   ImGui::Text("t = %.3f s   step %lld%s", session.world().time(), session.world().stepCount(),
               session.stopped() ? "   STOPPED (non-finite)" : "");
   if (state.recorder != nullptr) {

@@ -12,13 +12,6 @@
 
 namespace weft::editor {
 
-void recordWidget(PanelState& state, const std::string& id) {
-  if (state.probe == nullptr) return;
-  const ImVec2 lo = ImGui::GetItemRectMin();
-  const ImVec2 hi = ImGui::GetItemRectMax();
-  state.probe->rects[id] = ImVec4(lo.x, lo.y, hi.x, hi.y);
-}
-
 namespace {
 
 // The scenes beside the open one, to open instead.
@@ -112,22 +105,18 @@ void drawForces(EditorSession& session) {
   ImGui::TextUnformatted("Forces");
   Vec3 gravity = forces.gravity;
   if (editVector("gravity (m/s^2)", gravity)) session.edit(withGravity(session.json(), gravity), "gravity");
+  showRefusal(session, "gravity");
   Vec3 wind = forces.wind.velocity;
   if (editVector("wind (m/s)", wind)) session.edit(withWind(session.json(), wind), "wind");
+  showRefusal(session, "wind");
   double damping = forces.damping.mass;
-  if (numberField("mass damping (1/s)", damping, "%.3g", 100) && damping >= 0.0) {
+  if (numberField("mass damping (1/s)", damping, "%.3g", 100)) {
     session.edit(withMassDamping(session.json(), damping), "mass damping");
   }
+  showRefusal(session, "mass damping");
 }
 
 }  // namespace
-
-bool numberField(const char* label, double& value, const char* format, float width) {
-  ImGui::SetNextItemWidth(width);
-  return ImGui::InputDouble(label, &value, 0.0, 0.0, format,
-                            ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll) &&
-         std::isfinite(value);
-}
 
 void drawScenePanel(EditorSession& session, PanelState& state) {
   if (!ImGui::Begin("Scene")) {
@@ -163,12 +152,15 @@ void drawScenePanel(EditorSession& session, PanelState& state) {
   }
   recordWidget(state, "scene/open");
   ImGui::SetNextItemWidth(170);
-  ImGui::InputTextWithHint("##openpath", "path/to/scene.json", state.openPath, sizeof state.openPath);
+  ImGui::InputTextWithHint("##openpath", "path/to/scene.json", state.openPath, sizeof state.openPath,
+                           ImGuiInputTextFlags_AutoSelectAll);
+  recordWidget(state, "scene/openpath");
   ImGui::SameLine();
   if (ImGui::Button("Open") && state.openPath[0] != '\0') state.openRequest = std::filesystem::absolute(state.openPath);
 
   ImGui::SetNextItemWidth(170);
-  ImGui::InputTextWithHint("##saveas", "other/scene.json", state.saveAsPath, sizeof state.saveAsPath);
+  ImGui::InputTextWithHint("##saveas", "other/scene.json", state.saveAsPath, sizeof state.saveAsPath,
+                           ImGuiInputTextFlags_AutoSelectAll);
   ImGui::SameLine();
   if (ImGui::Button("Save as") && state.saveAsPath[0] != '\0') {
     try {

@@ -28,15 +28,17 @@ void drawSolverPanel(EditorSession& session, PanelState& state) {
   }
   const SolverSpec& solver = session.scene().solver;
   double dt = solver.dt * 1000.0;
-  if (numberField("time step (ms)", dt, "%.4g", 120) && dt > 0.0) {
-    session.edit(withTimeStep(session.json(), dt / 1000.0), "time step");
-  }
+  // Every typed value goes to the strict reader, which refuses a bad one with the reason.
+  if (numberField("time step (ms)", dt, "%.4g", 120)) session.edit(withTimeStep(session.json(), dt / 1000.0), "time step");
   recordWidget(state, "solver/dt");
+  showRefusal(session, "time step");
   int substeps = solver.substeps;
   ImGui::SetNextItemWidth(120);
-  if (ImGui::InputInt("substeps", &substeps, 1, 1, ImGuiInputTextFlags_EnterReturnsTrue) && substeps >= 1) {
+  if (ImGui::InputInt("substeps", &substeps, 1, 1, ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll)) {
     session.edit(withSubsteps(session.json(), substeps), "substeps");
   }
+  recordWidget(state, "solver/substeps");
+  showRefusal(session, "substeps");
   const char* integrators[] = {"linearized_backward_euler", "newton", "symplectic_euler"};
   const char* current = integratorName(solver.integrator);
   ImGui::SetNextItemWidth(220);
@@ -59,9 +61,11 @@ void drawSolverPanel(EditorSession& session, PanelState& state) {
     ImGui::EndCombo();
   }
   double tolerance = solver.linearTolerance;
-  if (numberField("CG tolerance", tolerance, "%.2g", 120) && tolerance > 0.0) {
+  if (numberField("CG tolerance", tolerance, "%.2g", 120)) {
     session.edit(withLinearTolerance(session.json(), tolerance), "CG tolerance");
   }
+  recordWidget(state, "solver/tolerance");
+  showRefusal(session, "CG tolerance");
 
   ImGui::Separator();
   const World& world = session.world();

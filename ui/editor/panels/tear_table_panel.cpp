@@ -11,6 +11,7 @@
 #include "panels.h"
 #include "preset_names.h"
 #include "scene/scene_json.h"
+#include "tearing/tear_candidates.h"
 #include "tearing/tear_table.h"
 
 namespace weft::editor {
@@ -24,14 +25,16 @@ std::vector<std::string> tearTablePresets(const Scene& scene) {
 }
 
 // ℜ(α) around the full circle, in material space (screen right = material x, up = material y),
-// the frame the woven texture is drawn in. α is measured from the warp V (tear_table.h), and V
-// lies 90° from the weft U, so the line at screen angle θ has α = θ - (weft angle + 90°).
+// the frame the woven texture is drawn in. The line at screen angle θ is a line at θ in material
+// space; its α comes from the core's own angleFromWarpDeg, the one convention the tearing stage
+// and its tear log use, so the plot's dips lie along the lines the simulation tears.
 void drawPolarPlot(const TearTable& table, double weftAngleDeg, float size) {
   ImDrawList* draw = ImGui::GetWindowDrawList();
   const ImVec2 origin = ImGui::GetCursorScreenPos();
   ImGui::InvisibleButton("polar", ImVec2(size, size));
   const ImVec2 c(origin.x + 0.5f * size, origin.y + 0.5f * size);
-  const float radius = 0.45f * size;
+  // Room around the circle for the axis labels, which are kept inside the plot's square.
+  const float radius = 0.40f * size;
   double largest = 0.0;
   for (double s : table.strength) largest = std::max(largest, s * table.unitNPerM);
   if (largest <= 0.0) return;
@@ -44,16 +47,24 @@ void drawPolarPlot(const TearTable& table, double weftAngleDeg, float size) {
     const ImVec2 tip(c.x + radius * static_cast<float>(std::cos(angle)), c.y - radius * static_cast<float>(std::sin(angle)));
     const ImVec2 tail(c.x - radius * static_cast<float>(std::cos(angle)), c.y + radius * static_cast<float>(std::sin(angle)));
     draw->AddLine(tail, tip, colour, 1.5f);
-    draw->AddText(ImVec2(tip.x + 3, tip.y - 7), colour, label);
+    // The label's centre just past the tip, lifted off a near-horizontal axis so the line does not
+    // cross it, then kept inside the plot's square.
+    const ImVec2 text = ImGui::CalcTextSize(label);
+    const float out = 0.5f * text.y + 3.0f;
+    const float lift = (0.5f * text.y + 2.0f) * static_cast<float>(std::abs(std::cos(angle)));
+    const float x = tip.x + out * static_cast<float>(std::cos(angle)) - 0.5f * text.x;
+    const float y = tip.y - out * static_cast<float>(std::sin(angle)) - lift - 0.5f * text.y;
+    draw->AddText(ImVec2(std::clamp(x, origin.x, origin.x + size - text.x), std::clamp(y, origin.y, origin.y + size - text.y)),
+                  colour, label);
   };
   axis(weft, IM_COL32(40, 90, 200, 255), "weft");
   axis(weft + 0.5 * kPi, IM_COL32(30, 150, 60, 255), "warp");
 
-  // The curve: at screen angle θ, the line direction is θ; its angle from V is θ - (weft + 90°).
+  // The curve: at screen angle θ, the line direction is θ in material space.
   std::vector<ImVec2> points;
   for (int i = 0; i <= 360; ++i) {
     const double theta = i * kPi / 180.0;
-    const double alphaDeg = (theta - weft - 0.5 * kPi) * 180.0 / kPi;
+    const double alphaDeg = angleFromWarpDeg(theta, weft);
     const double r = radius * requiredStrength(table, alphaDeg) / largest;
     points.emplace_back(c.x + static_cast<float>(r * std::cos(theta)), c.y - static_cast<float>(r * std::sin(theta)));
   }
@@ -118,14 +129,12 @@ void drawTearTablePanel(EditorSession& session, PanelState& state) {
     double value = table.strength[static_cast<std::size_t>(k)];
     const std::string label = std::to_string(static_cast<int>(std::lround(tableDirectionDeg(table, k)))) + " deg##tear" +
                               std::to_string(k);
+    const std::string editLabel = "tear strength " + label.substr(0, label.find("##"));
     if (numberField(label.c_str(), value, "%.3g", 120)) {
-      if (value > 0.0) {
-        session.edit(withTearStrength(session.json(), scene, state.cloth, k, value), "tear strength " + label);
-      } else {
-        session.status = "a tear strength must be a positive number";
-      }
+      session.edit(withTearStrength(session.json(), scene, state.cloth, k, value), editLabel);
     }
     recordWidget(state, "tear/" + std::to_string(k));
+    showRefusal(session, editLabel);
   }
   drawPolarPlot(table, cloth.weftAngleDeg, 220.0f);
   recordWidget(state, "tear/plot");

@@ -1,11 +1,55 @@
 // Tools: pick a tool, tag its vertices and edges sharp by clicking them in the viewport (sharp
-// parts are drawn red), undo, and save the tags beside the tool's mesh; throw a ball from the
-// camera.
+// parts are drawn red), undo, and save the tags: beside the tool's mesh, or, for a tool shipped
+// with Weft, beside the scene unless the user says to change the shipped file; throw a ball from
+// the camera.
 #include <string>
 
 #include "panels.h"
 
 namespace weft::editor {
+
+namespace {
+
+void saveTags(EditorSession& session, ToolTagEditor& tool, bool besideScene) {
+  try {
+    if (besideScene) {
+      const std::filesystem::path file = tool.saveBesideScene(session);
+      session.status = "saved " + file.string() + "; the scene reads the tags from there";
+    } else {
+      tool.save();
+      session.status = "saved " + tool.document().file().string();
+    }
+  } catch (const std::exception& e) {
+    session.status = std::string("tags not saved: ") + e.what();
+  }
+}
+
+// A shipped tool's tags file is shared by every scene that uses the tool: ask first.
+void drawTagsDialog(EditorSession& session, PanelState& state) {
+  if (state.tagsDialog) ImGui::OpenPopup("Save sharp tags");
+  if (!ImGui::BeginPopupModal("Save sharp tags", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
+  const std::filesystem::path shipped = state.tool->document().file();
+  ImGui::TextWrapped("%s is a tool shipped with Weft; its tags file %s is used by every scene with this tool.",
+                     session.scene().obstacles[static_cast<std::size_t>(state.tool->obstacle())].name.c_str(),
+                     shipped.string().c_str());
+  if (ImGui::Button("Save beside this scene")) {
+    saveTags(session, *state.tool, true);
+    state.tagsDialog = false;
+  }
+  recordWidget(state, "tools/savebesidescene");
+  ImGui::SameLine();
+  if (ImGui::Button("Change the shipped file")) {
+    saveTags(session, *state.tool, false);
+    state.tagsDialog = false;
+  }
+  recordWidget(state, "tools/saveshipped");
+  ImGui::SameLine();
+  if (ImGui::Button("Cancel") || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false)) state.tagsDialog = false;
+  if (!state.tagsDialog) ImGui::CloseCurrentPopup();
+  ImGui::EndPopup();
+}
+
+}  // namespace
 
 void drawToolsPanel(EditorSession& session, PanelState& state) {
   if (!ImGui::Begin("Tools")) {
@@ -57,6 +101,12 @@ void drawToolsPanel(EditorSession& session, PanelState& state) {
                        state.tool->document().dirty() ? " (unsaved)" : "");
     ImGui::Checkbox("click the tool to tag sharp", &state.tagMode);
     recordWidget(state, "tools/tagmode");
+    // Blades: every edge where the faces fold more than the angle, in one step.
+    if (ImGui::Button("Tag edges sharper than")) state.tool->tagEdgesSharperThan(session, state.sharperThanDeg);
+    recordWidget(state, "tools/sharperthan");
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(60);
+    ImGui::InputDouble("deg", &state.sharperThanDeg, 0.0, 0.0, "%.0f", ImGuiInputTextFlags_AutoSelectAll);
     ImGui::BeginDisabled(!state.tool->document().history().canUndo());
     if (ImGui::Button("Undo tag")) state.tool->undo(session);
     ImGui::EndDisabled();
@@ -66,14 +116,14 @@ void drawToolsPanel(EditorSession& session, PanelState& state) {
     ImGui::EndDisabled();
     ImGui::SameLine();
     if (ImGui::Button("Save tags")) {
-      try {
-        state.tool->save();
-        session.status = "saved " + state.tool->document().file().string();
-      } catch (const std::exception& e) {
-        session.status = e.what();
+      if (state.tool->savesIntoInstalledData()) {
+        state.tagsDialog = true;
+      } else {
+        saveTags(session, *state.tool, false);
       }
     }
     recordWidget(state, "tools/save");
+    drawTagsDialog(session, state);
   } else {
     state.tagMode = false;
     ImGui::TextWrapped("Choose a tool to tag its sharp vertices and edges (mesh tools only).");

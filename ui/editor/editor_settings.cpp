@@ -1,0 +1,52 @@
+#include "editor/editor_settings.h"
+
+#include <cstdlib>
+#include <fstream>
+#include <string>
+#include <system_error>
+
+#include <nlohmann/json.hpp>
+
+#include "util/atomic_file.h"
+
+namespace weft::editor {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+std::string environment(const char* name) {
+  const char* value = std::getenv(name);
+  return value ? std::string(value) : std::string();
+}
+
+}  // namespace
+
+fs::path defaultSettingsFile() {
+  if (const std::string dir = environment("WEFT_CONFIG_DIR"); !dir.empty()) return fs::path(dir) / "editor.json";
+  if (const std::string config = environment("XDG_CONFIG_HOME"); !config.empty())
+    return fs::path(config) / "weft" / "editor.json";
+  if (const std::string home = environment("HOME"); !home.empty()) return fs::path(home) / ".config" / "weft" / "editor.json";
+  return fs::temp_directory_path() / "weft-editor.json";
+}
+
+EditorSettings loadEditorSettings(const fs::path& file) {
+  EditorSettings settings;
+  std::ifstream in(file, std::ios::binary);
+  if (!in) return settings;
+  const json j = json::parse(in, nullptr, /*allow_exceptions=*/false);
+  if (!j.is_object()) return settings;
+  if (const auto it = j.find("material_preset_folder"); it != j.end() && it->is_string())
+    settings.materialPresetFolder = it->get<std::string>();
+  return settings;
+}
+
+void saveEditorSettings(const EditorSettings& settings, const fs::path& file) {
+  std::error_code ec;
+  fs::create_directories(file.parent_path(), ec);
+  const json j = {{"material_preset_folder", settings.materialPresetFolder.string()}};
+  writeFileAtomically(file, j.dump(2) + "\n");
+}
+
+}  // namespace weft::editor

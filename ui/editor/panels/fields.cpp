@@ -1,0 +1,38 @@
+// What every panel's fields share: where a widget was drawn (for tests), the number field, and
+// the message of a refused edit shown under its field.
+#include <cmath>
+#include <string>
+
+#include "panels.h"
+
+namespace weft::editor {
+
+void recordWidget(PanelState& state, const std::string& id) {
+  if (state.probe == nullptr) return;
+  const ImVec2 lo = ImGui::GetItemRectMin();
+  const ImVec2 hi = ImGui::GetItemRectMax();
+  state.probe->rects[id] = ImVec4(lo.x, lo.y, hi.x, hi.y);
+}
+
+bool numberField(const char* label, double& value, const char* format, float width) {
+  ImGui::SetNextItemWidth(width);
+  return ImGui::InputDouble(label, &value, 0.0, 0.0, format,
+                            ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll) &&
+         std::isfinite(value);
+}
+
+const ImVec4 kRefusedColour(0.80f, 0.05f, 0.05f, 1.0f);
+
+bool showRefusal(const EditorSession& session, const std::string& label) {
+  const std::optional<Refusal>& refusal = session.refusal();
+  if (!refusal || refusal->label != label) return false;
+  // The field itself shows the value in force again; the message says what was refused and why.
+  ImGui::PushStyleColor(ImGuiCol_Text, kRefusedColour);
+  ImGui::PushTextWrapPos(0.0f);
+  ImGui::TextUnformatted(("not applied: " + refusal->message).c_str());
+  ImGui::PopTextWrapPos();
+  ImGui::PopStyleColor();
+  return true;
+}
+
+}  // namespace weft::editor
