@@ -193,7 +193,7 @@ bool HealthCheck::checkNow(const World& world) {
       fail(world, {0, 0.0, "energy", "integrate", gained, kEnergyGrowth * energyScale_,
                    format("the total energy grew by %.3g J with nothing feeding it (limit %.3g J); "
                           "lower solver.dt, raise solver.substeps, or use solver.integrator = newton",
-                          gained, energyScale_)});
+                          gained, kEnergyGrowth * energyScale_)});
       return false;
     }
   }

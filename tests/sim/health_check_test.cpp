@@ -5,10 +5,17 @@
 #include <gtest/gtest.h>
 
 #include <cstdint>
+#include <cstdio>
+#include <fstream>
+#include <string>
+
+#include <nlohmann/json.hpp>
 
 #include "material/material.h"
+#include "scene/scene_json.h"
 #include "sim/finite_state.h"
 #include "sim/world.h"
+#include "support/temp_dir.h"
 #include "support/test_scenes.h"
 
 namespace weft {
@@ -105,6 +112,30 @@ TEST(HealthCheck, AnUnstableExplicitRunIsCaughtBeforeItIsNonFinite) {
   EXPECT_TRUE(stateIsFinite(world)) << "caught only once non-finite, by " << health.failure()->check;
   const std::string check = health.failure()->check;
   EXPECT_TRUE(check == "energy" || check == "strain" || check == "speed") << check;
+  char limit[32];
+  std::snprintf(limit, sizeof limit, "%.3g", health.failure()->limit);
+  EXPECT_NE(health.failure()->message.find(limit), std::string::npos)
+      << "the message states the limit: " << health.failure()->message;
+}
+
+
+TEST(HealthCheck, ADynamicTetrahedronFlungAwayIsCaught) {
+  // Issue 19's case: ball-on-pinned-sheet with its ball replaced by a valid 10 cm tetrahedron of
+  // 0.2 kg. From about 0.75 s the contact with the sheet pumps energy into it (strain in the
+  // millions, the body 60 km away by the end) while everything stays finite.
+  test::TempDir dir;
+  dir.write("tet.obj", "v 0 0 0\nv 0.1 0 0\nv 0 0.1 0\nv 0 0 0.1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n");
+  std::ifstream preset(std::string(WEFT_SOURCE_DIR) + "/presets/scenes/ball-on-pinned-sheet.json");
+  nlohmann::json scene = nlohmann::json::parse(preset);
+  scene["name"] = "tetrahedron-on-pinned-sheet";
+  scene["obstacles"][0]["shape"] = {{"mesh", {{"path", (dir.path() / "tet.obj").string()}}}};
+  World world(loadScene(dir.write("scene.json", scene.dump())));
+  HealthCheck health(world, stepsPerFrame(world.scene()));  // checked per frame, as weft run does
+  run(world, health, 120);
+  ASSERT_FALSE(health.healthy()) << "120 steps (1 s) unnoticed";
+  EXPECT_LT(health.failure()->time, 0.9);
+  EXPECT_EQ(health.failure()->check, "energy") << health.failure()->message;
+  EXPECT_TRUE(stateIsFinite(world));
 }
 
 }  // namespace
