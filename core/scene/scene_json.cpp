@@ -57,7 +57,7 @@ ObjSpec parseObj(const json& j, const std::string& pointer, const SceneReadConte
   const FieldReader r(j, pointer, ctx.file, {"path", "uv_scale"});
   ObjSpec obj;
   const std::string relative = r.stringValue(r.required("path", "the OBJ file's path (a string)"), r.pointer("path"));
-  obj.uvScale = r.number("uv_scale", obj.uvScale, Bound::Positive);
+  obj.uvScale = r.number("uv_scale", obj.uvScale, limits::kUvScale, "uv_scale");
   obj.path = resolveAsset(relative, r, "path", ctx);
   return obj;
 }

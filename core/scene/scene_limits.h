@@ -14,6 +14,7 @@ namespace weft::limits {
 inline constexpr int kMaxGridResolution = 4096;            // vertices along one side of a grid
 inline constexpr std::int64_t kMaxClothVertices = 1 << 20;  // per cloth, grid or OBJ
 inline constexpr Range kClothSize{0.0, 100.0, true, "m"};   // grid width and height
+inline constexpr Range kUvScale{0.0, 1000.0, true, "m per UV unit"};  // an OBJ cloth's uv_scale
 
 // Time. Below a microsecond a run of seconds needs millions of steps; above a second a step
 // skips everything a cloth does.

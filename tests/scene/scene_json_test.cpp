@@ -315,6 +315,8 @@ INSTANTIATE_TEST_SUITE_P(
                 "/cloths/0/mesh/grid/resolution/0", "[2, 4096]"},
         BadCase{"TooManyGridVertices", "", {"cloths.0.mesh.grid.resolution=[4096,4096]"},
                 "/cloths/0/mesh/grid/resolution", "at most 1048576"},
+        BadCase{"HugeUvScale", "", {R"(cloths.0.mesh={"obj": {"path": "degenerate.obj", "uv_scale": 1e300}})"},
+                "/cloths/0/mesh/obj/uv_scale", "(0, 1000] m per UV unit"},
         BadCase{"HugeGridWidth", "", {"cloths.0.mesh.grid.width=1e308"}, "/cloths/0/mesh/grid/width", "(0, 100] m"},
         BadCase{"ThickContact", R"({"contact": {"thickness": 3.7}})", {}, "/contact/thickness", "(0, 0.1] m"},
         BadCase{"TinyDt", "", {"solver.dt=1e-12"}, "/solver/dt", "[1e-06, 1] s"},
