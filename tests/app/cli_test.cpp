@@ -296,6 +296,21 @@ TEST_F(WeftCli, AKilledRerunLeavesThePreviousOutputAsItWas) {
   EXPECT_FALSE(fs::exists(work() / "result" / "frames" / "frame_0003.obj"));
 }
 
+TEST_F(WeftCli, ALongRunSaysSoBeforeItStartsEvenWhenQuiet) {
+  // A million frames of a 256 x 256 sheet: weeks of work. One line, then the run (killed here).
+  const Result r = weft("run " + quoted(kHangingSheet) +
+                            " --set 'cloths.0.mesh.grid.resolution=[256,256]' --frames 1000000 --quiet --out result",
+                        "timeout -s KILL 2");
+  EXPECT_EQ(r.output.rfind("weft: a long run: 1000000 frames x 2 steps x 1 substep(s) of 65536 cloth vertices, roughly ", 0),
+            0u)
+      << r.output;
+  EXPECT_NE(r.output.find(" days"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(work() / "result" / "metrics.json"));
+
+  const Result small = weft("run " + quoted(kHangingSheet) + " " + kTiny + " --quiet --out small");
+  EXPECT_EQ(small.output, "") << "a short run says nothing with --quiet";
+}
+
 TEST_F(WeftCli, HostileInputIsBadInputWithAShortMessage) {
   const auto expectShortBadInput = [&](const std::string& arguments, const std::string& phrase) {
     SCOPED_TRACE(arguments.substr(0, 120));
