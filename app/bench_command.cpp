@@ -24,6 +24,7 @@
 
 #include "accuracy_study.h"
 #include "bench_stats.h"
+#include "cli_checks.h"
 #include "command.h"
 #include "default_scene.h"
 #include "contact_bench.h"
@@ -32,6 +33,7 @@
 #include "material/elasticity.h"
 #include "metrics_writer.h"
 #include "scene/scene_json.h"
+#include "scene/scene_limits.h"
 #include "sim/world.h"
 #include "util/input_error.h"
 
@@ -279,17 +281,17 @@ Command addBenchCommand(CLI::App& app) {
       ->delimiter(',')
       ->check(CLI::IsMember({"cg", "cholmod"}))
       ->capture_default_str();
-  cli->add_option("--steps", options->steps, "Timed steps per repeat")->check(CLI::PositiveNumber)->capture_default_str();
+  cli->add_option("--steps", options->steps, "Timed steps per repeat")->check(integerIn(1, 1'000'000))->capture_default_str();
   cli->add_option("--warmup", options->warmup, "Untimed steps before timing")
-      ->check(CLI::NonNegativeNumber)
+      ->check(integerIn(0, 1'000'000))
       ->capture_default_str();
   cli->add_option("--repeats", options->repeats, "Repeats (the median is reported)")
-      ->check(CLI::PositiveNumber)
+      ->check(integerIn(1, 1000))
       ->capture_default_str();
-  cli->add_option("--threads", options->threads, "Worker threads")->check(CLI::PositiveNumber)->capture_default_str();
+  cli->add_option("--threads", options->threads, "Worker threads")->check(integerIn(1, limits::kMaxThreads))->capture_default_str();
   cli->add_option("--symplectic-substeps", options->symplecticSubsteps,
                   "Substeps per 1/60 s step for symplectic Euler (default: estimated for stability)")
-      ->check(CLI::PositiveNumber);
+      ->check(integerIn(1, limits::kMaxSubsteps));
   cli->add_option("--csv", options->csv, "CSV output file")->capture_default_str();
   cli->add_option("--scene", options->scene, "Scene to benchmark (its first cloth must be a grid)");
   cli->add_flag("--accuracy", options->accuracy,

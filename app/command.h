@@ -12,7 +12,7 @@ enum ExitCode : int {
   kExitOk = 0,
   kExitFailure = 1,    // could not write output, or an internal error
   kExitBadInput = 2,   // bad scene, preset, mesh or command line
-  kExitNonFinite = 3,  // the simulation produced a non-finite position or velocity
+  kExitNonFinite = 3,  // the simulation became non-finite or failed its health check (sim/health_check.h)
 };
 
 struct Command {

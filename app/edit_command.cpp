@@ -10,11 +10,13 @@
 #include <string>
 #include <vector>
 
+#include "cli_checks.h"
 #include "command.h"
 #include "default_scene.h"
 #include "glfw_window.h"
 #include "editor_app.h"
 #include "scene/scene_json.h"
+#include "scene/scene_limits.h"
 #include "run_command.h"
 #include "util/input_error.h"
 
@@ -111,7 +113,7 @@ Command addEditCommand(CLI::App& app) {
       ->allow_extra_args(false);
   parsed->framesOption = cli->add_option("--frames", parsed->frames,
                                          "Quit after N displayed frames (headless fallback: simulate N frames)")
-                             ->check(CLI::PositiveNumber);
+                             ->check(integerIn(1, limits::kMaxFrames));
   cli->add_option("--screenshot", parsed->screenshot, "Write the last displayed frame to FILE as PNG")
       ->type_name("FILE");
   cli->add_flag("--play", parsed->options.play, "Start playing (scenes open paused at t = 0)");

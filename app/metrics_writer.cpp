@@ -1,5 +1,6 @@
 #include "metrics_writer.h"
 
+#include <cmath>
 #include <cstdio>
 
 namespace weft::app {
@@ -64,10 +65,15 @@ nlohmann::ordered_json runMetrics(const World& world, double wallSeconds) {
   j["stage_ms"] = stageMs;
   j["vertices"] = vertices;
   j["triangles"] = triangles;
-  j["max_strain"] = m.maxStrain;
-  j["kinetic_energy"] = m.kineticEnergy;
-  j["elastic_energy"] = m.elasticEnergy;
-  j["gravity_energy"] = m.gravityEnergy;
+  // A non-finite state has no meaningful strain or energy: the key is left out rather than written
+  // as null (what JSON makes of NaN) or as a number that means nothing.
+  const auto putFinite = [&j](const char* key, double value) {
+    if (std::isfinite(value)) j[key] = value;
+  };
+  putFinite("max_strain", m.maxStrain);
+  putFinite("kinetic_energy", m.kineticEnergy);
+  putFinite("elastic_energy", m.elasticEnergy);
+  putFinite("gravity_energy", m.gravityEnergy);
   j["finite"] = m.finite;
   j["solver"] = {
       {"integrator", integratorName(scene.solver.integrator)},

@@ -4,17 +4,21 @@
 // Order matters for what a failure leaves behind: everything that can be wrong with the input
 // (scene, presets, meshes, pins) is checked by loading the scene and building the World before
 // the output folder is created, so bad input never leaves an empty or stale-looking result.
+#include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <memory>
 #include <optional>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "util/atomic_file.h"
+#include "cli_checks.h"
 #include "command.h"
 #include "run_command.h"
 #include "contact/obstacle.h"
@@ -24,7 +28,11 @@
 #include "metrics_writer.h"
 #include "progress_bar.h"
 #include "scene/scene_json.h"
+#include "scene/scene_limits.h"
 #include "sim/finite_state.h"
+#include "sim/health_check.h"
+#include "run_estimate.h"
+#include "staged_output.h"
 #include "sim/world.h"
 #include "util/input_error.h"
 
@@ -75,6 +83,14 @@ int runScene(const RunOptions& options) {
   std::unique_ptr<World> world;
   try {
     scene = loadScene(options.scene, overrides);
+    // Results do not depend on the thread count (determinism), so more threads than the machine
+    // can run at once only cost; the OpenMP runtime fails outright far above that.
+    const int machineThreads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    if (scene->solver.threads > 4 * machineThreads) {
+      std::cerr << "weft: solver.threads = " << scene->solver.threads << " is more than 4 x the " << machineThreads
+                << " hardware thread(s) of this machine; using " << 4 * machineThreads << " (same results)\n";
+      scene->solver.threads = 4 * machineThreads;
+    }
     world = std::make_unique<World>(*scene);
   } catch (const InputError& e) {
     std::cerr << "weft: " << e.what() << "\n";
@@ -82,7 +98,10 @@ int runScene(const RunOptions& options) {
   }
 
   const fs::path outDir = options.out.empty() ? fs::path("out") / scene->name : fs::path(options.out);
-  const fs::path framesDir = outDir / "frames";
+  // Everything is written into a staging folder and moved into outDir at the end (staged_output.h).
+  std::unique_ptr<StagedOutput> staged;
+  fs::path stagingDir;
+  fs::path framesDir;
   const bool png = options.png || options.video;
   int width = 0, height = 0;
   if (png && !parseImageSize(options.size, width, height)) {
@@ -116,12 +135,24 @@ int runScene(const RunOptions& options) {
   };
 
   const int frames = scene->output.frames;
-  const int stepsPerFrameCount = stepsPerFrame(*scene);
+  const std::int64_t stepsPerFrameCount = stepsPerFrame(*scene);
   const bool talk = !options.quiet;
 
+  // A long run says so before it starts, even with --quiet (one line on stderr).
+  std::int64_t vertexCount = 0;
+  for (int i = 0; i < world->clothCount(); ++i) vertexCount += world->cloth(i).vertexCount();
+  const double estimate =
+      estimatedRunSeconds(vertexCount, scene->solver.substeps, static_cast<std::int64_t>(frames) * stepsPerFrameCount);
+  bool announced = estimate > kLongRunSeconds;
+  if (announced) {
+    std::cerr << "weft: a long run: " << frames << " frames x " << stepsPerFrameCount << " steps x "
+              << scene->solver.substeps << " substep(s) of " << vertexCount << " cloth vertices, roughly "
+              << describeDuration(estimate) << " (estimated; fewer frames, a coarser mesh or a larger solver.dt shorten it)\n";
+  }
+
   if (talk) {
-    std::printf("scene %s: %d frames x %d steps of %g s, %d substep(s), %d thread(s)\n", scene->name.c_str(), frames,
-                stepsPerFrameCount, scene->solver.dt, scene->solver.substeps, scene->solver.threads);
+    std::printf("scene %s: %d frames x %lld steps of %g s, %d substep(s), %d thread(s)\n", scene->name.c_str(), frames,
+                static_cast<long long>(stepsPerFrameCount), scene->solver.dt, scene->solver.substeps, scene->solver.threads);
     std::printf("stages:");
     for (const auto& stage : world->stagesRun()) std::printf(" %s", stage.c_str());
     std::printf("\n");
@@ -129,17 +160,12 @@ int runScene(const RunOptions& options) {
   }
 
   try {
-    fs::create_directories(outDir);
-    if (options.obj) {
-      fs::create_directories(framesDir);
-      removeOldFrames(framesDir);
-      writeFrames(*world, framesDir, 0);
-    }
-    if (png) {
-      fs::create_directories(framesDir);
-      removeOldPngFrames(framesDir);
-      writeImages(0);
-    }
+    staged = std::make_unique<StagedOutput>(outDir);
+    stagingDir = staged->staging();
+    framesDir = stagingDir / "frames";
+    if (options.obj || png) fs::create_directories(framesDir);
+    if (options.obj) writeFrames(*world, framesDir, 0);
+    if (png) writeImages(0);
   } catch (const std::exception& e) {
     std::cerr << "weft: cannot write to " << outDir.string() << ": " << e.what() << "\n";
     return kExitFailure;
@@ -149,49 +175,86 @@ int runScene(const RunOptions& options) {
   double wallSeconds = 0.0;
   bool finite = stateIsFinite(*world);
   int framesDone = 0;
+  HealthCheck health(*world, stepsPerFrameCount);
+  // An unhealthy state is reported once; without --keep-going the run stops at the step it failed.
+  bool warned = false;
+  auto reportUnhealthy = [&] {
+    if (warned || health.healthy()) return;
+    warned = true;
+    const HealthFailure& failure = *health.failure();
+    progress.finish();
+    std::cerr << "weft: " << (options.keepGoing ? "warning: " : "") << "unhealthy run at step " << failure.step
+              << " (t = " << failure.time << " s), " << failure.stage << " stage: " << failure.message
+              << (options.keepGoing ? " (continuing: --keep-going)" : "") << "\n";
+  };
   try {
-    for (int frame = 1; frame <= frames && finite; ++frame) {
+    for (int frame = 1; frame <= frames && finite && (health.healthy() || options.keepGoing); ++frame) {
       const auto start = std::chrono::steady_clock::now();
-      for (int s = 0; s < stepsPerFrameCount; ++s) world->step();
+      bool stop = false;
+      for (std::int64_t s = 0; s < stepsPerFrameCount && !stop; ++s) {
+        world->step();
+        stop = !health.afterStep(*world) && !options.keepGoing;
+      }
       wallSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       // A non-finite state only gets worse; stop, but still report what happened.
       finite = stateIsFinite(*world);
-      if (finite) {
+      reportUnhealthy();
+      if (finite && !stop) {
         framesDone = frame;
         if (options.obj) writeFrames(*world, framesDir, frame);
         writeImages(frame);
       }
       progress.update(frame);
+      // The first frame's time is a better guide than the count: say so if the estimate missed.
+      const double projected = wallSeconds * frames / frame;
+      const bool continues = finite && !stop && frames > 1;
+      if (frame == 1 && !announced && projected > kLongRunSeconds && continues) {
+        announced = true;
+        progress.finish();
+        std::cerr << "weft: a long run: the first frame took " << describeDuration(wallSeconds) << ", so " << frames
+                  << " frames will take about " << describeDuration(projected) << "\n";
+      }
     }
+    if (finite) health.checkNow(*world);
+    reportUnhealthy();
     progress.finish();
 
     const fs::path metricsFile = outDir / "metrics.json";
     nlohmann::ordered_json metrics = runMetrics(*world, wallSeconds);
+    metrics["healthy"] = health.healthy() && finite;
+    if (const auto& failure = health.failure()) {
+      metrics["health"] = {{"first_failing_step", failure->step}, {"time_s", failure->time},
+                           {"check", failure->check},            {"stage", failure->stage},
+                           {"value", failure->value},            {"limit", failure->limit},
+                           {"message", failure->message}};
+    }
     if (pngWriter) {
       metrics["render"] = {{"gl_renderer", pngWriter->glRenderer()},
                            {"size", {pngWriter->width(), pngWriter->height()}},
                            {"frames", pngFrames}};
     }
-    writeFileAtomically(metricsFile, metrics.dump(2) + "\n");
     const fs::path videoFile = outDir / "frames.mp4";
+    bool videoWritten = false;
     if (video) {
-      std::error_code ec;
-      fs::remove(videoFile, ec);
       const double fps = scene->output.fps / options.every;
-      if (encodeVideo(framesDir, videoFile, fps) != 0) {
-        std::cerr << "weft: --video: ffmpeg failed; the PNG frames are in " << framesDir.string() << "\n";
-      } else if (talk) {
-        std::printf("wrote %s\n", videoFile.string().c_str());
-      }
+      videoWritten = encodeVideo(framesDir, stagingDir / "frames.mp4", fps) == 0;
+    }
+    writeFileAtomically(stagingDir / "metrics.json", metrics.dump(2) + "\n");
+    staged->publish(options.obj, png);
+    const fs::path publishedFrames = outDir / "frames";
+    if (video && !videoWritten) {
+      std::cerr << "weft: --video: ffmpeg failed; the PNG frames are in " << publishedFrames.string() << "\n";
+    } else if (video && talk) {
+      std::printf("wrote %s\n", videoFile.string().c_str());
     }
 
     if (talk) {
       printStageShares(world->profile());
       std::printf("wrote %s\n", metricsFile.string().c_str());
-      if (options.obj) std::printf("wrote %d frame(s) to %s\n", framesDone + 1, framesDir.string().c_str());
+      if (options.obj) std::printf("wrote %d frame(s) to %s\n", framesDone + 1, publishedFrames.string().c_str());
       if (png) {
         std::printf("wrote %d PNG image(s) of %dx%d to %s (%s)\n", pngFrames, width, height,
-                    framesDir.string().c_str(), pngWriter->glRenderer().c_str());
+                    publishedFrames.string().c_str(), pngWriter->glRenderer().c_str());
       }
     }
   } catch (const std::exception& e) {
@@ -203,6 +266,11 @@ int runScene(const RunOptions& options) {
   if (!finite) {
     std::cerr << "weft: the simulation became non-finite after frame " << framesDone << " (t = " << world->time()
               << " s); metrics were written with \"finite\": false\n";
+    return kExitNonFinite;
+  }
+  if (!health.healthy()) {
+    std::cerr << "weft: metrics were written with \"healthy\": false (see \"health\" in "
+              << (outDir / "metrics.json").string() << ")\n";
     return kExitNonFinite;
   }
   return kExitOk;
@@ -224,13 +292,13 @@ Command addRunCommand(CLI::App& app) {
   cli->add_option("scene", options.scene, "Scene file (JSON), e.g. presets/scenes/hanging-sheet.json")->required();
   parsed->framesOption =
       cli->add_option("--frames", parsed->frames, "Frames to simulate (same as --set output.frames=N)")
-          ->check(CLI::NonNegativeNumber);
+          ->check(integerIn(0, limits::kMaxFrames));
   cli->add_option("--out", options.out, "Output folder (default: out/<scene name>)");
   cli->add_flag("--obj", options.obj, "Also write frames/frame_NNNN.obj for every frame (frame 0 = start)");
   cli->add_flag("--png", options.png,
                 "Also render frames/frame_NNNN.png headless (OpenGL through EGL; no display needed)");
   cli->add_option("--every", options.every, "With --png: render every N-th frame (default 1)")
-      ->check(CLI::PositiveNumber);
+      ->check(integerIn(1, limits::kMaxFrames));
   cli->add_option("--size", options.size, "With --png: image size WxH in pixels (default 960x720)");
   cli->add_flag("--video", options.video, "--png, then encode DIR/frames.mp4 with ffmpeg when it is installed");
   cli->add_option("--set", options.overrides, "Override a scene value, e.g. --set solver.dt=0.005 (repeatable)")
@@ -238,8 +306,11 @@ Command addRunCommand(CLI::App& app) {
       ->allow_extra_args(false);
   parsed->threadsOption =
       cli->add_option("--threads", parsed->threads, "Worker threads (same as --set solver.threads=N)")
-          ->check(CLI::PositiveNumber);
+          ->check(integerIn(1, limits::kMaxThreads));
   cli->add_flag("--quiet,-q", options.quiet, "Print nothing but errors");
+  cli->add_flag("--keep-going", options.keepGoing,
+                "When the health check fails (runaway strain or energy, unresolved contact, failing solves), "
+                "warn and finish the run instead of stopping; still exits 3");
   return {cli, [parsed] {
             RunOptions given = parsed->options;
             if (parsed->framesOption->count() > 0) given.frames = parsed->frames;

@@ -18,6 +18,7 @@ struct RunOptions {
   int every = 1;                        // render every N-th frame
   std::string size = "960x720";         // PNG size, WxH pixels
   bool quiet = false;                   // print nothing but errors
+  bool keepGoing = false;               // an unhealthy run (sim/health_check.h) warns and continues
   std::vector<std::string> overrides;   // --set PATH=VALUE, in order
 };
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <iostream>
 #include <memory>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -21,7 +22,36 @@ namespace {
 struct ValidateOptions {
   std::string scene;
   std::vector<std::string> overrides;
+  bool showVertexMap = false;  // list every `v` line's cloth vertices, not only the summary
 };
+
+// How an OBJ cloth's `v` lines became cloth vertices (obj_import.h): pins by id name `v` lines,
+// and frames written with --obj list the cloth vertices, so a user matching the two needs this.
+std::string describeVertexMap(const ClothSpec& cloth, const ObjVertexMap& map, bool everyLine) {
+  int unused = 0, split = 0;
+  for (const auto& ids : map.clothVertices) {
+    unused += ids.empty() ? 1 : 0;
+    split += ids.size() > 1 ? 1 : 0;
+  }
+  std::ostringstream out;
+  out << "  cloth " << cloth.name << ": " << map.objVertexCount() << " `v` lines of " << cloth.obj->path.filename().string()
+      << "; pins.vertices ids are `v` lines counted from 0; ";
+  if (map.isIdentity()) {
+    out << "cloth vertex k is `v` line k\n";
+  } else {
+    out << split << " split on UV seams, " << unused << " used by no face"
+        << (everyLine ? "" : " (--vertex-map lists them)") << "\n";
+  }
+  if (everyLine) {
+    for (std::size_t k = 0; k < map.clothVertices.size(); ++k) {
+      out << "    v " << k << " -> ";
+      if (map.clothVertices[k].empty()) out << "(unused)";
+      for (std::size_t j = 0; j < map.clothVertices[k].size(); ++j) out << (j ? ", " : "") << map.clothVertices[k][j];
+      out << "\n";
+    }
+  }
+  return out.str();
+}
 
 int validateScene(const ValidateOptions& options) {
   try {
@@ -29,13 +59,18 @@ int validateScene(const ValidateOptions& options) {
     long long vertices = 0;
     long long triangles = 0;
     int problems = 0;
+    std::vector<std::string> vertexMaps;  // printed after the summary line
     for (std::size_t i = 0; i < scene.cloths.size(); ++i) {
       const ClothSpec& cloth = scene.cloths[i];
-      const ClothMesh mesh = cloth.grid ? makeGrid(*cloth.grid) : loadObjMesh(*cloth.obj, scene.file.string());
-      for (const auto& problem : checkMesh(mesh)) {
-        std::cerr << "weft: " << scene.file.string() << ": /cloths/" << i << "/mesh: " << problem << "\n";
-        ++problems;
+      ObjVertexMap objVertices;
+      const ClothMesh mesh =
+          cloth.grid ? makeGrid(*cloth.grid) : loadObjMesh(*cloth.obj, scene.file.string(), &objVertices);
+      const std::vector<std::string> found = checkMesh(mesh);
+      for (const auto& line : groupProblems(found)) {
+        std::cerr << "weft: " << scene.file.string() << ": /cloths/" << i << "/mesh: " << line << "\n";
       }
+      problems += static_cast<int>(found.size());
+      if (cloth.obj) vertexMaps.push_back(describeVertexMap(cloth, objVertices, options.showVertexMap));
       vertices += mesh.vertexCount();
       triangles += mesh.triangleCount();
     }
@@ -56,6 +91,7 @@ int validateScene(const ValidateOptions& options) {
     }
     if (scene.ground.enabled) std::cout << ", ground at y = " << scene.ground.height;
     std::cout << "\n";
+    for (const std::string& map : vertexMaps) std::cout << map;
     for (const ClothSpec& cloth : scene.cloths) {
       if (!cloth.material.tearTable) continue;
       const TearTable& table = *cloth.material.tearTable;
@@ -80,6 +116,8 @@ Command addValidateCommand(CLI::App& app) {
   cli->add_option("--set", options->overrides, "Override a scene value, e.g. --set solver.dt=0.005 (repeatable)")
       ->type_name("PATH=VALUE")
       ->allow_extra_args(false);
+  cli->add_flag("--vertex-map", options->showVertexMap,
+                "For OBJ cloths, list the cloth vertex id(s) of every `v` line (pins.vertices name `v` lines)");
   return {cli, [options] { return validateScene(*options); }};
 }
 

@@ -10,6 +10,7 @@
 
 #include "util/input_error.h"
 #include "util/json_fields.h"
+#include "util/json_text.h"
 
 namespace weft {
 namespace {
@@ -196,14 +197,7 @@ nlohmann::json materialToJson(const Material& m) {
 
 Material loadMaterialFile(const std::filesystem::path& file) {
   const std::string fileName = file.string();
-  std::ifstream in(file);
-  if (!in) throw InputError(fileName, "", "cannot open the material file");
-  json j;
-  try {
-    j = json::parse(in);
-  } catch (const json::exception& e) {  // a syntax error (with its position) or a number overflow
-    throw InputError(fileName, "", std::string("invalid JSON: ") + e.what());
-  }
+  const json j = readJsonFile(file, "the material file");
   // A material file is a preset: it must say what it is and where its numbers come from.
   const FieldReader r(j, "", fileName, kGot);
   r.requiredString("name", "the preset's name");
@@ -218,11 +212,12 @@ Material loadMaterialPreset(const std::string& name, const std::vector<std::file
   if (plainName) {
     for (const auto& dir : presetDirs) {
       const std::filesystem::path file = dir / (name + ".json");
-      if (!std::filesystem::is_regular_file(file)) continue;
+      std::error_code error;  // a name too long for the file system is simply not there
+      if (!std::filesystem::is_regular_file(file, error)) continue;
       Material m = loadMaterialFile(file);
       if (m.name != name) {
         throw InputError(file.string(), "/name",
-                         "is '" + m.name + "' but the preset is looked up as '" + name + "'; they must match");
+                         "is '" + echo(m.name) + "' but the preset is looked up as '" + echo(name) + "'; they must match");
       }
       return m;
     }
@@ -230,7 +225,7 @@ Material loadMaterialPreset(const std::string& name, const std::vector<std::file
   std::vector<std::string> dirs;
   for (const auto& dir : presetDirs) dirs.push_back(dir.string());
   throw InputError(referencingFile, referencingField,
-                   "unknown material preset '" + name + "'; available presets: " +
+                   "unknown material preset '" + echo(name) + "'; available presets: " +
                        (available.empty() ? std::string("none") : joinNames(available)) +
                        " (searched: " + joinNames(dirs) + ")");
 }

@@ -284,7 +284,46 @@ void checkDanglingVertices(const ClothMesh& mesh, Problems& out) {
   }
 }
 
+// A problem's kind: its text with every run of digits replaced by '#'.
+std::string problemKind(const std::string& line) {
+  std::string kind;
+  for (std::size_t i = 0; i < line.size(); ++i) {
+    const bool digit = line[i] >= '0' && line[i] <= '9';
+    if (!digit) kind += line[i];
+    else if (kind.empty() || kind.back() != '#') kind += '#';
+  }
+  return kind;
+}
+
 }  // namespace
+
+std::vector<std::string> groupProblems(const std::vector<std::string>& problems, std::size_t maxKinds) {
+  std::vector<std::string> kinds;
+  std::vector<std::size_t> first, count;
+  for (std::size_t i = 0; i < problems.size(); ++i) {
+    const std::string kind = problemKind(problems[i]);
+    const auto it = std::find(kinds.begin(), kinds.end(), kind);
+    if (it != kinds.end()) {
+      ++count[static_cast<std::size_t>(it - kinds.begin())];
+      continue;
+    }
+    kinds.push_back(kind);
+    first.push_back(i);
+    count.push_back(1);
+  }
+  std::vector<std::string> lines;
+  for (std::size_t k = 0; k < kinds.size() && k < maxKinds; ++k) {
+    lines.push_back(problems[first[k]] +
+                    (count[k] > 1 ? " (and " + std::to_string(count[k] - 1) + " more like it)" : std::string()));
+  }
+  if (kinds.size() > maxKinds) {
+    std::size_t rest = 0;
+    for (std::size_t k = maxKinds; k < kinds.size(); ++k) rest += count[k];
+    lines.push_back(std::to_string(rest) + " more problem(s) of " + std::to_string(kinds.size() - maxKinds) +
+                    " other kind(s)");
+  }
+  return lines;
+}
 
 std::vector<std::string> checkMesh(const ClothMesh& mesh) {
   Problems problems;

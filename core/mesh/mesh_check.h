@@ -14,4 +14,10 @@ namespace weft {
 // Returns one human-readable line per problem (empty when valid).
 std::vector<std::string> checkMesh(const ClothMesh& mesh);
 
+// checkMesh's lines grouped by kind (the same words with other numbers), in order of first
+// appearance, at most `maxKinds` kinds: a kind seen once is its line, a repeated one its first
+// line followed by "(and 1922 more like it)". A sheet of huge coordinates breaks every triangle
+// alike; one line says so, where one line per triangle would flood the terminal.
+std::vector<std::string> groupProblems(const std::vector<std::string>& problems, std::size_t maxKinds = 10);
+
 }  // namespace weft

@@ -5,6 +5,7 @@
 // definition, so nothing is defined here and the code below works for either.
 #include <tiny_obj_loader.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -17,6 +18,7 @@
 #include <utility>
 
 #include "mesh/mesh_check.h"
+#include "scene/scene_limits.h"
 #include "util/input_error.h"
 #include "util/obj_faces.h"
 #include "util/obj_text.h"
@@ -46,12 +48,41 @@ std::filesystem::path resolvePath(const std::filesystem::path& path, const std::
 }
 
 std::string readText(const std::filesystem::path& path, const ObjSource& source) {
-  if (!std::filesystem::is_regular_file(path)) source.fail("", "mesh file not found");
+  std::error_code error;  // a path too long for the file system is simply not found
+  if (!std::filesystem::is_regular_file(path, error)) source.fail("", "mesh file not found");
   std::ifstream in(path, std::ios::binary);
   if (!in) source.fail("", "cannot open mesh file");
   std::ostringstream text;
   text << in.rdbuf();
-  return text.str();
+  return withoutByteOrderMark(text.str());
+}
+
+// Renumbers the cloth vertices by their `v` line (ties, the copies of a seam vertex, keep their
+// order of first use), so that ids follow the file as its author sees it. Returns the map.
+ObjVertexMap renumberInObjOrder(ClothMesh& mesh, const std::vector<int>& positionOf, int positionCount) {
+  const int n = mesh.vertexCount();
+  std::vector<int> byFileOrder(static_cast<std::size_t>(n));  // new id -> old id
+  for (int i = 0; i < n; ++i) byFileOrder[static_cast<std::size_t>(i)] = i;
+  std::stable_sort(byFileOrder.begin(), byFileOrder.end(),
+                   [&](int a, int b) { return positionOf[static_cast<std::size_t>(a)] < positionOf[static_cast<std::size_t>(b)]; });
+  std::vector<int> newId(static_cast<std::size_t>(n));
+  for (int i = 0; i < n; ++i) newId[static_cast<std::size_t>(byFileOrder[static_cast<std::size_t>(i)])] = i;
+
+  ClothMesh renumbered;
+  for (int i = 0; i < n; ++i) renumbered.addVertex(mesh.x[static_cast<std::size_t>(byFileOrder[static_cast<std::size_t>(i)])]);
+  renumbered.tris = std::move(mesh.tris);
+  for (Triangle& t : renumbered.tris) {
+    for (int& v : t.v) v = newId[static_cast<std::size_t>(v)];
+  }
+  mesh = std::move(renumbered);
+
+  ObjVertexMap map;
+  map.clothVertices.resize(static_cast<std::size_t>(positionCount));
+  for (int i = 0; i < n; ++i) {
+    map.clothVertices[static_cast<std::size_t>(positionOf[static_cast<std::size_t>(byFileOrder[static_cast<std::size_t>(i)])])]
+        .push_back(i);
+  }
+  return map;
 }
 
 double uvArea(const Vec2& a, const Vec2& b, const Vec2& c) {
@@ -62,7 +93,14 @@ double uvArea(const Vec2& a, const Vec2& b, const Vec2& c) {
 
 }  // namespace
 
-ClothMesh loadObjMesh(const ObjSpec& spec, const std::string& referencingFile) {
+bool ObjVertexMap::isIdentity() const {
+  for (std::size_t k = 0; k < clothVertices.size(); ++k) {
+    if (clothVertices[k].size() != 1 || clothVertices[k][0] != static_cast<int>(k)) return false;
+  }
+  return true;
+}
+
+ClothMesh loadObjMesh(const ObjSpec& spec, const std::string& referencingFile, ObjVertexMap* outVertexMap) {
   const std::filesystem::path path = resolvePath(spec.path, referencingFile);
   const ObjSource source{path.string(), referencingFile};
   if (!std::isfinite(spec.uvScale) || spec.uvScale <= 0.0) {
@@ -100,9 +138,11 @@ ClothMesh loadObjMesh(const ObjSpec& spec, const std::string& referencingFile) {
   const int uvCount = static_cast<int>(attrib.texcoords.size() / 2);
 
   ClothMesh mesh;
-  // One cloth vertex per distinct (position, UV) pair, numbered in order of first use: corners
-  // that share a position but not a UV lie on a seam and become separate vertices.
+  // One cloth vertex per distinct (position, UV) pair: corners that share a position but not a UV
+  // lie on a seam and become separate vertices. They are first numbered in order of first use,
+  // then renumbered in `v` order below.
   std::unordered_map<std::uint64_t, int> clothVertexOf;
+  std::vector<int> positionOf;  // first-use number -> `v` line (from 0)
   auto clothVertex = [&](const tinyobj::index_t& corner) {
     const std::uint64_t key = (static_cast<std::uint64_t>(corner.vertex_index) << 32) |
                               static_cast<std::uint32_t>(corner.texcoord_index);
@@ -111,6 +151,7 @@ ClothMesh loadObjMesh(const ObjSpec& spec, const std::string& referencingFile) {
       const size_t p = 3 * static_cast<size_t>(corner.vertex_index);
       mesh.addVertex(Vec3(static_cast<double>(attrib.vertices[p]), static_cast<double>(attrib.vertices[p + 1]),
                           static_cast<double>(attrib.vertices[p + 2])));
+      positionOf.push_back(corner.vertex_index);
     }
     return it->second;
   };
@@ -148,6 +189,12 @@ ClothMesh loadObjMesh(const ObjSpec& spec, const std::string& referencingFile) {
     }
   });
   if (mesh.tris.empty()) source.fail("", "has no faces");
+  if (mesh.vertexCount() > limits::kMaxClothVertices) {
+    source.fail("", std::to_string(mesh.vertexCount()) + " cloth vertices; a cloth has at most " +
+                        std::to_string(limits::kMaxClothVertices));
+  }
+  const ObjVertexMap vertexMap = renumberInObjOrder(mesh, positionOf, positionCount);
+  if (outVertexMap != nullptr) *outVertexMap = vertexMap;
 
   buildEdges(mesh);
   // Reject what the simulator cannot handle (edges shared by three faces, UV islands folded over

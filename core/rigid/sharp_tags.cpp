@@ -12,6 +12,7 @@
 #include "util/atomic_file.h"
 #include "util/input_error.h"
 #include "util/json_fields.h"
+#include "util/json_text.h"
 
 namespace weft {
 
@@ -100,14 +101,7 @@ SharpTags loadSharpTags(const std::filesystem::path& file, const TriangleMesh& m
   std::error_code ec;
   if (!std::filesystem::exists(file, ec)) return {};
   const std::string name = file.string();
-  std::ifstream in(file, std::ios::binary);
-  if (!in || std::filesystem::is_directory(file)) throw InputError(name, "", "cannot open the sharp-tag file");
-  json j;
-  try {
-    j = json::parse(in);
-  } catch (const json::exception& e) {  // a syntax error (with its position) or a number overflow
-    throw InputError(name, "", std::string("not valid JSON: ") + e.what());
-  }
+  const json j = readJsonFile(file, "the sharp-tag file");
   const FieldReader r(j, "", name, {kVerticesKey, kEdgesKey});
   SharpTags tags;
   if (r.has(kVerticesKey)) tags.vertices = readVertices(r, static_cast<int>(mesh.vertices.size()));

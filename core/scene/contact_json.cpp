@@ -1,5 +1,8 @@
 #include "scene/contact_json.h"
 
+#include "scene/scene_limits.h"
+#include "util/echo.h"
+
 #include <filesystem>
 
 namespace weft {
@@ -20,27 +23,32 @@ ShapeSpec parseShape(const json& j, const std::string& pointer, const SceneReadC
   if (kind == "sphere") {
     r.allowOnly({"radius", "subdivisions"});
     shape.kind = ShapeKind::Sphere;
-    shape.radius = r.requiredNumber("radius", Bound::Positive, "the sphere's radius (m)");
+    shape.radius = r.numberValue(r.required("radius", "the sphere's radius (m)"), r.pointer("radius"),
+                                 limits::kShapeSize, "the sphere's radius");
     shape.subdivisions = r.integer("subdivisions", shape.subdivisions, 0);
     if (shape.subdivisions > 6) r.fail(r.pointer("subdivisions"), "must be at most 6 (81,920 triangles)");
   } else if (kind == "box") {
     r.allowOnly({"half_extents", "resolution"});
     shape.kind = ShapeKind::Box;
     shape.halfExtents = vec3Value(r, r.required("half_extents", "[x, y, z] half extents (m)"), r.pointer("half_extents"));
-    if ((shape.halfExtents.array() <= 0.0).any()) r.fail(r.pointer("half_extents"), "every half extent must be > 0");
-    shape.resolution = r.integer("resolution", shape.resolution, 1);
+    for (int k = 0; k < 3; ++k) {
+      (void)r.numberValue(r.at("half_extents")[static_cast<std::size_t>(k)], childPointer(r.pointer("half_extents"), std::size_t(k)),
+                          limits::kShapeSize, "a half extent");
+    }
+    shape.resolution = r.integer("resolution", shape.resolution, 1, limits::kMaxBoxResolution);
   } else if (kind == "capsule" || kind == "cylinder") {
     r.allowOnly({"radius", "half_length", "segments"});
     shape.kind = kind == "capsule" ? ShapeKind::Capsule : ShapeKind::Cylinder;
-    shape.radius = r.requiredNumber("radius", Bound::Positive, "the radius (m)");
-    shape.halfLength = r.requiredNumber("half_length", Bound::Positive, "half the length along body y (m)");
-    shape.segments = r.integer("segments", shape.segments, 3);
+    shape.radius = r.numberValue(r.required("radius", "the radius (m)"), r.pointer("radius"), limits::kShapeSize, "the radius");
+    shape.halfLength = r.numberValue(r.required("half_length", "half the length along body y (m)"),
+                                     r.pointer("half_length"), limits::kShapeSize, "half the length");
+    shape.segments = r.integer("segments", shape.segments, 3, limits::kMaxShapeSegments);
   } else {
     r.allowOnly({"path", "scale", "sharp_tags"});
     shape.kind = ShapeKind::Mesh;
     const std::string relative = r.stringValue(r.required("path", "the OBJ file's path (a string)"), r.pointer("path"));
     shape.meshPath = resolveAsset(relative, r, "path", ctx);
-    shape.scale = r.number("scale", shape.scale, Bound::Positive);
+    shape.scale = r.number("scale", shape.scale, limits::kMeshScale, "scale");
     if (r.has("sharp_tags")) {
       const std::string tags = r.stringValue(r.at("sharp_tags"), r.pointer("sharp_tags"));
       shape.sharpTagsPath = resolveAsset(tags, r, "sharp_tags", ctx);
@@ -48,7 +56,8 @@ ShapeSpec parseShape(const json& j, const std::string& pointer, const SceneReadC
       // Tools keep their tags beside their mesh: sword.obj -> sword.sharp.json.
       fs::path beside = shape.meshPath;
       beside.replace_extension(".sharp.json");
-      if (fs::is_regular_file(beside)) shape.sharpTagsPath = beside;
+      std::error_code error;  // a name too long for the file system has no tags beside it
+      if (fs::is_regular_file(beside, error)) shape.sharpTagsPath = beside;
     }
   }
   return shape;
@@ -96,7 +105,7 @@ void parseMotion(const json& j, const std::string& pointer, const SceneReadConte
     obstacle.motion = ObstacleMotion::Dynamic;
     obstacle.mass = r.requiredNumber("mass", Bound::Positive, "the body's mass (kg)");
   }
-  obstacle.velocity = vec3(r, "velocity", obstacle.velocity);
+  obstacle.velocity = boundedVec3(r, "velocity", obstacle.velocity, limits::kMaxBodySpeed, "m/s");
   obstacle.angularVelocityDeg = vec3(r, "angular_velocity_deg", obstacle.angularVelocityDeg);
 }
 
@@ -141,7 +150,7 @@ std::vector<ObstacleSpec> parseObstacles(const json& array, const std::string& p
     for (const auto& other : obstacles) {
       if (other.name == obstacle.name) {
         throw InputError(ctx.file, childPointer(childPointer(pointer, i), "name"),
-                         "obstacle names must be unique; \"" + obstacle.name + "\" is used twice");
+                         "obstacle names must be unique; \"" + echo(obstacle.name) + "\" is used twice");
       }
     }
     obstacles.push_back(std::move(obstacle));
@@ -156,10 +165,11 @@ ContactSpec parseContact(const json& j, const std::string& pointer, const SceneR
   ContactSpec contact;
   contact.obstacles = r.boolean("obstacles", contact.obstacles);
   contact.self = r.boolean("self", contact.self);
-  contact.thickness = r.number("thickness", contact.thickness, Bound::Positive);
+  contact.thickness = r.number("thickness", contact.thickness, limits::kContactThickness, "contact thickness");
   contact.selfFriction = r.number("self_friction", contact.selfFriction, Bound::NonNegative);
-  contact.ccdIterations = r.integer("ccd_iterations", contact.ccdIterations, 1);
-  contact.impactZoneIterations = r.integer("impact_zone_iterations", contact.impactZoneIterations, 1);
+  contact.ccdIterations = r.integer("ccd_iterations", contact.ccdIterations, 1, limits::kMaxContactIterations);
+  contact.impactZoneIterations =
+      r.integer("impact_zone_iterations", contact.impactZoneIterations, 1, limits::kMaxContactIterations);
   contact.reusePairs = r.boolean("reuse_pairs", contact.reusePairs);
   contact.recheckAllPairs = r.boolean("recheck_all_pairs", contact.recheckAllPairs);
   return contact;

@@ -2,6 +2,7 @@
 // A scene: what to simulate and how. Plain structs with in-class defaults (units in the comment);
 // scene/scene_json.cpp converts JSON to these and rejects unknown keys, wrong types and
 // out-of-range values with an InputError naming the file and the JSON path of the field.
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -177,6 +178,6 @@ struct Scene {
   friend bool operator==(const Scene&, const Scene&) = default;
 };
 
-int stepsPerFrame(const Scene& scene);
+std::int64_t stepsPerFrame(const Scene& scene);
 
 }  // namespace weft

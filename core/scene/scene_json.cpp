@@ -1,6 +1,8 @@
 #include "scene/scene_json.h"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -10,11 +12,14 @@
 #include "material/material.h"
 #include "mesh/grid.h"
 #include "mesh/obj_import.h"
+#include "util/echo.h"
 #include "util/input_error.h"
+#include "util/json_text.h"
 #include "util/json_fields.h"
 #include "scene/contact_json.h"
 #include "scene/tearing_json.h"
 #include "scene/scene_json_parts.h"
+#include "scene/scene_limits.h"
 
 namespace weft {
 namespace {
@@ -28,16 +33,22 @@ namespace fs = std::filesystem;
 GridSpec parseGrid(const json& j, const std::string& pointer, const SceneReadContext& ctx) {
   const FieldReader r(j, pointer, ctx.file, {"width", "height", "resolution"});
   GridSpec grid;
-  grid.width = r.number("width", grid.width, Bound::Positive);
-  grid.height = r.number("height", grid.height, Bound::Positive);
+  grid.width = r.number("width", grid.width, limits::kClothSize, "width");
+  grid.height = r.number("height", grid.height, limits::kClothSize, "height");
   if (r.has("resolution")) {
     const json& res = r.at("resolution");
     const std::string at = r.pointer("resolution");
     if (!res.is_array() || res.size() != 2) {
       r.fail(at, "must be [vertices along x, vertices along y], two integers >= 2, " + got(res));
     }
-    grid.resolutionX = r.integerValue(res[0], childPointer(at, std::size_t{0}), 2);
-    grid.resolutionY = r.integerValue(res[1], childPointer(at, std::size_t{1}), 2);
+    grid.resolutionX = r.integerValue(res[0], childPointer(at, std::size_t{0}), 2, limits::kMaxGridResolution);
+    grid.resolutionY = r.integerValue(res[1], childPointer(at, std::size_t{1}), 2, limits::kMaxGridResolution);
+    const std::int64_t vertices = std::int64_t{grid.resolutionX} * grid.resolutionY;
+    if (vertices > limits::kMaxClothVertices) {
+      r.fail(at, std::to_string(grid.resolutionX) + " x " + std::to_string(grid.resolutionY) + " = " +
+                     std::to_string(vertices) + " vertices; a cloth has at most " +
+                     std::to_string(limits::kMaxClothVertices) + " (1024 x 1024)");
+    }
   }
   return grid;
 }
@@ -46,7 +57,7 @@ ObjSpec parseObj(const json& j, const std::string& pointer, const SceneReadConte
   const FieldReader r(j, pointer, ctx.file, {"path", "uv_scale"});
   ObjSpec obj;
   const std::string relative = r.stringValue(r.required("path", "the OBJ file's path (a string)"), r.pointer("path"));
-  obj.uvScale = r.number("uv_scale", obj.uvScale, Bound::Positive);
+  obj.uvScale = r.number("uv_scale", obj.uvScale, limits::kUvScale, "uv_scale");
   obj.path = resolveAsset(relative, r, "path", ctx);
   return obj;
 }
@@ -78,6 +89,7 @@ void parseMaterialField(const FieldReader& r, const SceneReadContext& ctx, Cloth
   }
   if (!value.is_string()) r.fail(at, "must be a preset name or a material object, " + got(value));
   const std::string name = value.get<std::string>();
+  requirePresetNameLength(r, at, name);
   // loadMaterialPreset names the scene field and lists the available presets when `name` is unknown.
   cloth.material = loadMaterialPreset(name, ctx.paths.materialDirs, ctx.file, at);
   cloth.materialName = name;
@@ -92,6 +104,7 @@ void parseTearTableField(const FieldReader& r, const SceneReadContext& ctx, Clot
   if (value.is_object()) {
     cloth.material.tearTable = parseTearTable(value, ctx.file, at);
   } else if (value.is_string()) {
+    requirePresetNameLength(r, at, value.get<std::string>());
     cloth.material.tearTable = loadTearTablePreset(value.get<std::string>(), ctx.paths.tearTableDirs, ctx.file, at);
   } else {
     r.fail(at, "must be a tear table preset name or a tear table object, " + got(value));
@@ -137,7 +150,7 @@ PinGroup parsePinGroup(const json& j, const std::string& pointer, const SceneRea
       const std::string name = r.stringValue(corners[k], at);
       const auto& known = cornerNames();
       if (std::find(known.begin(), known.end(), name) == known.end()) {
-        r.fail(at, "unknown corner \"" + name + "\"; expected one of " + joinNames(known));
+        r.fail(at, "unknown corner \"" + echo(name) + "\"; expected one of " + joinNames(known));
       }
       pins.corners.push_back(name);
     }
@@ -166,8 +179,8 @@ PinGroup parsePinGroup(const json& j, const std::string& pointer, const SceneRea
 
 // Pins are checked against the mesh they will hold, so that a vertex id past the end or a box
 // that misses the cloth is reported at load time instead of silently pinning nothing.
-void checkPinsAgainstMesh(const ClothSpec& cloth, const ClothMesh& mesh, const std::string& pointer,
-                          const SceneReadContext& ctx) {
+void checkPinsAgainstMesh(const ClothSpec& cloth, const ClothMesh& mesh, const ObjVertexMap& objVertices,
+                          const std::string& pointer, const SceneReadContext& ctx) {
   std::vector<std::vector<Vec2>> rest(static_cast<std::size_t>(mesh.vertexCount()));
   for (const auto& t : mesh.tris) {
     for (int k = 0; k < 3; ++k) {
@@ -178,6 +191,21 @@ void checkPinsAgainstMesh(const ClothSpec& cloth, const ClothMesh& mesh, const s
     const PinGroup& pins = cloth.pins[g];
     const std::string at = childPointer(childPointer(pointer, "pins"), g);
     for (std::size_t k = 0; k < pins.vertices.size(); ++k) {
+      if (cloth.obj) {  // ids name `v` lines (obj_import.h)
+        const int id = pins.vertices[k];
+        if (id >= objVertices.objVertexCount()) {
+          throw InputError(ctx.file, childPointer(childPointer(at, "vertices"), k),
+                           "vertex id " + std::to_string(id) + " is out of range; on an OBJ cloth ids count the "
+                           "file's `v` lines from 0, and it has " + std::to_string(objVertices.objVertexCount()) +
+                           " (ids 0.." + std::to_string(objVertices.objVertexCount() - 1) + ")");
+        }
+        if (objVertices.clothVertices[static_cast<std::size_t>(id)].empty()) {
+          throw InputError(ctx.file, childPointer(childPointer(at, "vertices"), k),
+                           "vertex id " + std::to_string(id) + " is the file's `v` line " + std::to_string(id + 1) +
+                               ", which no face uses");
+        }
+        continue;
+      }
       if (pins.vertices[k] >= mesh.vertexCount()) {
         throw InputError(ctx.file, childPointer(childPointer(at, "vertices"), k),
                          "vertex id " + std::to_string(pins.vertices[k]) + " is out of range; the mesh has " +
@@ -205,10 +233,11 @@ void checkPinsAgainstMesh(const ClothSpec& cloth, const ClothMesh& mesh, const s
 
 // Builds the mesh once at load time: a missing UV set or a degenerate triangle in an OBJ file is
 // a problem with this scene, so it is reported against the scene field that names the file.
-ClothMesh buildMeshForChecks(const ClothSpec& cloth, const std::string& pointer, const SceneReadContext& ctx) {
+ClothMesh buildMeshForChecks(const ClothSpec& cloth, const std::string& pointer, const SceneReadContext& ctx,
+                             ObjVertexMap& outObjVertices) {
   if (cloth.grid) return makeGrid(*cloth.grid);
   try {
-    return loadObjMesh(*cloth.obj, ctx.file);
+    return loadObjMesh(*cloth.obj, ctx.file, &outObjVertices);
   } catch (const InputError& e) {
     throw InputError(ctx.file, childPointer(childPointer(childPointer(pointer, "mesh"), "obj"), "path"), e.what());
   }
@@ -231,7 +260,7 @@ ClothAppearance parseAppearance(const json& j, const std::string& pointer, const
     } else if (name == "plain") {
       appearance.pattern = WeavePattern::Plain;
     } else {
-      r.fail(r.pointer("pattern"), "unknown pattern \"" + name + "\"; expected gingham or plain");
+      r.fail(r.pointer("pattern"), "unknown pattern \"" + echo(name) + "\"; expected gingham or plain");
     }
   }
   appearance.threadPitch = 1e-3 * r.number("thread_pitch_mm", 1e3 * appearance.threadPitch, Bound::Positive, "thread pitch in mm");
@@ -257,19 +286,21 @@ ClothSpec parseCloth(const json& j, const std::string& pointer, std::size_t inde
     }
   }
   if (r.has("appearance")) cloth.appearance = parseAppearance(r.at("appearance"), r.pointer("appearance"), ctx);
-  checkPinsAgainstMesh(cloth, buildMeshForChecks(cloth, pointer, ctx), pointer, ctx);
+  ObjVertexMap objVertices;
+  const ClothMesh mesh = buildMeshForChecks(cloth, pointer, ctx, objVertices);
+  checkPinsAgainstMesh(cloth, mesh, objVertices, pointer, ctx);
   return cloth;
 }
 
 ForcesSpec parseForces(const json& j, const std::string& pointer, const SceneReadContext& ctx) {
   const FieldReader r(j, pointer, ctx.file, {"gravity", "wind", "damping"});
   ForcesSpec forces;
-  forces.gravity = vec3(r, "gravity", forces.gravity);
+  forces.gravity = boundedVec3(r, "gravity", forces.gravity, limits::kMaxGravity, "m/s^2");
   if (r.has("wind")) {
     const FieldReader w(r.at("wind"), r.pointer("wind"), ctx.file,
                         {"velocity", "air_density", "drag", "lift", "gust_amplitude", "gust_frequency"});
     WindSpec& wind = forces.wind;
-    wind.velocity = vec3(w, "velocity", wind.velocity);
+    wind.velocity = boundedVec3(w, "velocity", wind.velocity, limits::kMaxWindSpeed, "m/s");
     wind.airDensity = w.number("air_density", wind.airDensity, Bound::NonNegative);
     wind.drag = w.number("drag", wind.drag, Bound::NonNegative);
     wind.lift = w.number("lift", wind.lift, Bound::NonNegative);
@@ -290,7 +321,7 @@ IntegratorKind parseIntegrator(const FieldReader& r) {
   if (name == "newton") return IntegratorKind::Newton;
   if (name == "symplectic_euler") return IntegratorKind::SymplecticEuler;
   r.fail(r.pointer("integrator"),
-         "unknown integrator \"" + name + "\"; expected linearized_backward_euler, newton or symplectic_euler");
+         "unknown integrator \"" + echo(name) + "\"; expected linearized_backward_euler, newton or symplectic_euler");
 }
 
 PreconditionerKind parsePreconditioner(const FieldReader& r) {
@@ -298,19 +329,19 @@ PreconditionerKind parsePreconditioner(const FieldReader& r) {
   if (name == "block_jacobi") return PreconditionerKind::BlockJacobi;
   if (name == "lagged_cholesky") return PreconditionerKind::LaggedCholesky;
   if (name == "lagged_exact_cholesky") return PreconditionerKind::LaggedExactCholesky;
-  r.fail(r.pointer("preconditioner"), "unknown preconditioner \"" + name +
+  r.fail(r.pointer("preconditioner"), "unknown preconditioner \"" + echo(name) +
                                           "\"; expected lagged_cholesky, lagged_exact_cholesky or block_jacobi");
 }
 
 SolverSpec parseSolver(const json& j, const std::string& pointer, const SceneReadContext& ctx) {
   const FieldReader r(j, pointer, ctx.file, {"dt", "substeps", "integrator", "newton", "linear_solver", "threads"});
   SolverSpec solver;
-  solver.dt = r.number("dt", solver.dt, Bound::Positive);
-  solver.substeps = r.integer("substeps", solver.substeps, 1);
+  solver.dt = r.number("dt", solver.dt, limits::kTimeStep, "time step");
+  solver.substeps = r.integer("substeps", solver.substeps, 1, limits::kMaxSubsteps);
   if (r.has("integrator")) solver.integrator = parseIntegrator(r);
   if (r.has("newton")) {
     const FieldReader n(r.at("newton"), r.pointer("newton"), ctx.file, {"max_iterations", "tolerance"});
-    solver.newtonMaxIterations = n.integer("max_iterations", solver.newtonMaxIterations, 1);
+    solver.newtonMaxIterations = n.integer("max_iterations", solver.newtonMaxIterations, 1, limits::kMaxNewtonIterations);
     solver.newtonTolerance = n.number("tolerance", solver.newtonTolerance, Bound::NonNegative);
   }
   if (r.has("linear_solver")) {
@@ -320,13 +351,13 @@ SolverSpec parseSolver(const json& j, const std::string& pointer, const SceneRea
       const std::string type = l.stringValue(l.at("type"), l.pointer("type"));
       if (type == "cg") solver.linearSolver = LinearSolverKind::ConjugateGradient;
       else if (type == "cholmod") solver.linearSolver = LinearSolverKind::Cholmod;
-      else l.fail(l.pointer("type"), "unknown linear solver \"" + type + "\"; expected cg or cholmod");
+      else l.fail(l.pointer("type"), "unknown linear solver \"" + echo(type) + "\"; expected cg or cholmod");
     }
     if (l.has("preconditioner")) solver.linearPreconditioner = parsePreconditioner(l);
     solver.linearTolerance = l.number("tolerance", solver.linearTolerance, Bound::NonNegative);
-    solver.linearMaxIterations = l.integer("max_iterations", solver.linearMaxIterations, 1);
+    solver.linearMaxIterations = l.integer("max_iterations", solver.linearMaxIterations, 1, limits::kMaxLinearIterations);
   }
-  solver.threads = r.integer("threads", solver.threads, 1);
+  solver.threads = r.integer("threads", solver.threads, 1, limits::kMaxThreads);
   return solver;
 }
 
@@ -363,8 +394,8 @@ CameraSpec parseCamera(const json& j, const std::string& pointer, const SceneRea
 OutputSpec parseOutput(const json& j, const std::string& pointer, const SceneReadContext& ctx) {
   const FieldReader r(j, pointer, ctx.file, {"frames", "fps", "camera"});
   OutputSpec output;
-  output.frames = r.integer("frames", output.frames, 0);
-  output.fps = r.number("fps", output.fps, Bound::Positive);
+  output.frames = r.integer("frames", output.frames, 0, limits::kMaxFrames);
+  output.fps = r.number("fps", output.fps, limits::kFramesPerSecond, "frame rate");
   if (r.has("camera")) output.camera = parseCamera(r.at("camera"), r.pointer("camera"), ctx);
   return output;
 }
@@ -381,14 +412,14 @@ struct Override {
 Override splitOverride(const std::string& text, const std::string& file) {
   const std::size_t eq = text.find('=');
   const std::string usage = "an override must look like PATH=VALUE, e.g. solver.dt=0.005 or cloths.0.weft_angle_deg=30";
-  if (eq == std::string::npos) throw InputError(file, "override \"" + text + "\"", "missing '='; " + usage);
+  if (eq == std::string::npos) throw InputError(file, "override \"" + echo(text) + "\"", "missing '='; " + usage);
   Override o{text, {}, text.substr(eq + 1)};
   std::stringstream path(text.substr(0, eq));
   std::string part;
   while (std::getline(path, part, '.')) o.path.push_back(part);
   const bool emptyPart = std::any_of(o.path.begin(), o.path.end(), [](const std::string& p) { return p.empty(); });
   if (o.path.empty() || emptyPart || text.substr(0, eq).back() == '.') {
-    throw InputError(file, "override \"" + text + "\"", "empty path component; " + usage);
+    throw InputError(file, "override \"" + echo(text) + "\"", "empty path component; " + usage);
   }
   return o;
 }
@@ -408,15 +439,12 @@ bool parseIndex(const std::string& text, std::size_t& index) {
 // Appends to an InputError caused by an override the override that caused it: the scene file
 // itself may be fine, and the user should look at their command line instead.
 [[noreturn]] void rethrowNamingOverride(const InputError& e, const std::vector<Override>& overrides) {
-  const std::string prefix = (e.file().empty() ? std::string("<input>") : e.file()) +
-                             (e.field().empty() ? std::string() : ": " + e.field()) + ": ";
-  std::string message = e.what();
-  if (message.rfind(prefix, 0) == 0) message = message.substr(prefix.size());
+  const std::string& message = e.message();
   for (auto it = overrides.rbegin(); it != overrides.rend(); ++it) {
     const std::string p = overridePointer(*it);
     const bool related = e.field() == p || e.field().rfind(p + "/", 0) == 0 || p.rfind(e.field() + "/", 0) == 0;
     if (related && !e.field().empty()) {
-      throw InputError(e.file(), e.field(), message + " (from the override " + it->text + ")");
+      throw InputError(e.file(), e.field(), message + " (from the override " + echo(it->text) + ")");
     }
   }
   throw e;
@@ -457,9 +485,25 @@ SearchPaths defaultSearchPaths(const fs::path& sceneFile) {
 void applyOverrides(json& scene, const std::vector<std::string>& overrides, const std::string& file) {
   for (const auto& text : overrides) {
     const Override o = splitOverride(text, file);
-    const std::string field = "override \"" + text + "\"";
-    json value = json::parse(o.value, nullptr, /*allow_exceptions=*/false);
-    if (value.is_discarded()) value = o.value;  // not JSON: a plain string such as a preset name
+    const std::string field = "override \"" + echo(text) + "\"";
+    // A shell passes any bytes; a scene holds text. Refused here, before the bytes reach a
+    // message or a JSON dump (which would throw on them).
+    if (!isValidUtf8(text)) throw InputError(file, field, "is not valid UTF-8 text");
+    // JSON when it is JSON (read as strictly as a file), otherwise a plain string such as a preset name.
+    json value = o.value;
+    char* numberEnd = nullptr;
+    const double number = std::strtod(o.value.c_str(), &numberEnd);
+    const bool looksLikeANumber = !o.value.empty() && o.value.find_first_not_of("0123456789+-.eE") == std::string::npos;
+    if (looksLikeANumber && numberEnd == o.value.c_str() + o.value.size() && !std::isfinite(number)) {
+      throw InputError(file, field, "VALUE: the number " + echo(o.value) + " is too large for a double");
+    }
+    if (json::accept(o.value)) {
+      try {
+        value = parseJsonText(o.value, file);
+      } catch (const InputError& e) {
+        throw InputError(file, field, "VALUE: " + e.message() + (e.field().empty() ? "" : " (at " + e.field() + ")"));
+      }
+    }
 
     json* node = &scene;
     for (std::size_t k = 0; k < o.path.size(); ++k) {
@@ -469,7 +513,7 @@ void applyOverrides(json& scene, const std::vector<std::string>& overrides, cons
         std::size_t index = 0;
         if (!parseIndex(part, index) || index >= node->size()) {
           throw InputError(file, field,
-                           "\"" + part + "\" is not an index of the array there (it has " +
+                           "\"" + echo(part) + "\" is not an index of the array there (it has " +
                                std::to_string(node->size()) + " elements, indices 0.." +
                                std::to_string(static_cast<long>(node->size()) - 1) + ")");
         }
@@ -507,7 +551,7 @@ Scene parseScene(const json& j, const fs::path& file, const SearchPaths& paths) 
     for (const auto& other : scene.cloths) {
       if (other.name == cloth.name) {
         throw InputError(ctx.file, childPointer(childPointer(r.pointer("cloths"), i), "name"),
-                         "cloth names must be unique (they name output files); \"" + cloth.name + "\" is used twice");
+                         "cloth names must be unique (they name output files); \"" + echo(cloth.name) + "\" is used twice");
       }
     }
     scene.cloths.push_back(std::move(cloth));
@@ -520,18 +564,18 @@ Scene parseScene(const json& j, const fs::path& file, const SearchPaths& paths) 
   if (r.has("obstacles")) scene.obstacles = parseObstacles(r.array("obstacles"), r.pointer("obstacles"), ctx);
   if (r.has("contact")) scene.contact = parseContact(r.at("contact"), r.pointer("contact"), ctx);
   if (r.has("tearing")) scene.tearing = parseTearing(r.at("tearing"), r.pointer("tearing"), ctx);
+  // Each is in range, but together they may ask for millions of steps per frame.
+  if (const double steps = 1.0 / (scene.output.fps * scene.solver.dt); steps > double(limits::kMaxStepsPerFrame)) {
+    throw InputError(ctx.file, "/output/fps",
+                     "with solver.dt = " + formatNumber(scene.solver.dt) + " s, " + formatNumber(scene.output.fps) +
+                         " frames/s need " + formatNumber(steps) + " steps per frame; at most " +
+                         std::to_string(limits::kMaxStepsPerFrame) + " (raise fps or dt)");
+  }
   return scene;
 }
 
 Scene loadScene(const fs::path& file, const std::vector<std::string>& overrides) {
-  std::ifstream in(file);
-  if (!in) throw InputError(file.string(), "", "cannot open the scene file");
-  json j;
-  try {
-    j = json::parse(in, nullptr, /*allow_exceptions=*/true, /*ignore_comments=*/true);
-  } catch (const json::exception& e) {  // a syntax error (with its position) or a number overflow
-    throw InputError(file.string(), "", std::string("not valid JSON: ") + e.what());
-  }
+  json j = readJsonFile(file, "the scene file", JsonTextOptions{.allowComments = true});
   std::vector<Override> parsed;
   for (const auto& text : overrides) parsed.push_back(splitOverride(text, file.string()));
   applyOverrides(j, overrides, file.string());

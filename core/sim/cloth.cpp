@@ -35,8 +35,9 @@ std::vector<Vec2> vertexRestPositions(const ClothMesh& mesh) {
   return rest;
 }
 
-std::vector<int> selectPinGroup(const ClothMesh& mesh, const PinGroup& group, const std::string& sceneFile,
-                                const std::string& field) {
+// objVertices: for an OBJ cloth, where its `v` lines went; pins by id name `v` lines there.
+std::vector<int> selectPinGroup(const ClothMesh& mesh, const ObjVertexMap* objVertices, const PinGroup& group,
+                                const std::string& sceneFile, const std::string& field) {
   std::vector<int> selected;
   const std::vector<Vec2> rest = vertexRestPositions(mesh);
   if (!group.corners.empty()) {
@@ -71,6 +72,13 @@ std::vector<int> selectPinGroup(const ClothMesh& mesh, const PinGroup& group, co
       if ((rest[i].array() >= lo.array()).all() && (rest[i].array() <= hi.array()).all()) selected.push_back(i);
   }
   for (int id : group.vertices) {
+    if (objVertices != nullptr) {
+      if (id < 0 || id >= objVertices->objVertexCount() || objVertices->clothVertices[static_cast<std::size_t>(id)].empty())
+        throw InputError(sceneFile, field + "/vertices",
+                         "vertex id " + std::to_string(id) + " names no `v` line used by a face of the OBJ file");
+      for (int v : objVertices->clothVertices[static_cast<std::size_t>(id)]) selected.push_back(v);
+      continue;
+    }
     if (id < 0 || id >= mesh.vertexCount())
       throw InputError(sceneFile, field + "/vertices",
                        "vertex id " + std::to_string(id) + " out of range [0, " + std::to_string(mesh.vertexCount()) + ")");
@@ -146,6 +154,7 @@ CoupledVertexPairs coupledVertexPairs(const Cloth& cloth, const TopologyChange& 
 Cloth buildCloth(const ClothSpec& spec, const std::string& sceneFile, int clothIndex) {
   const std::string field = "/cloths/" + std::to_string(clothIndex);
   Cloth cloth;
+  ObjVertexMap objVertices;
   cloth.name = spec.name;
   cloth.material = spec.material;
   cloth.weftAngleRad = degToRad(spec.weftAngleDeg);
@@ -156,7 +165,7 @@ Cloth buildCloth(const ClothSpec& spec, const std::string& sceneFile, int clothI
       throw InputError(sceneFile, field + "/mesh/" + e.field(), e.what());
     }
   } else if (spec.obj) {
-    cloth.mesh = loadObjMesh(*spec.obj, sceneFile);
+    cloth.mesh = loadObjMesh(*spec.obj, sceneFile, &objVertices);
   } else {
     throw InputError(sceneFile, field + "/mesh", "needs a grid or an obj");
   }
@@ -173,7 +182,7 @@ Cloth buildCloth(const ClothSpec& spec, const std::string& sceneFile, int clothI
 
   for (size_t g = 0; g < spec.pins.size(); ++g) {
     PinTrack track;
-    track.vertices = selectPinGroup(cloth.mesh, spec.pins[g], sceneFile, field + "/pins/" + std::to_string(g));
+    track.vertices = selectPinGroup(cloth.mesh, spec.obj ? &objVertices : nullptr, spec.pins[g], sceneFile, field + "/pins/" + std::to_string(g));
     for (int v : track.vertices) {
       track.start.push_back(cloth.mesh.x[v]);
       cloth.mesh.pinned[v] = 1;

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <limits>
 
 #include "forces/elastic_forces.h"
 #include "sim/world_impl.h"
@@ -128,7 +129,10 @@ WorldMetrics World::metrics() const {
     options.bending = w.bendingRuns(cloth);
     const ElasticSummary elastic = evaluateElasticForces(cloth, mesh.x, options, workspace, forces, nullptr, scratchProfile);
     m.elasticEnergy += elastic.membraneEnergy + elastic.bendingEnergy;
-    m.maxStrain = std::max(m.maxStrain, elastic.maxPrincipalStrain);
+    // NaN must not vanish into std::max (a blown-up run would report a strain of 0).
+    const double strain = elastic.maxPrincipalStrain;
+    m.maxStrain = std::isnan(strain) || std::isnan(m.maxStrain) ? std::numeric_limits<double>::quiet_NaN()
+                                                                  : std::max(m.maxStrain, strain);
   }
   for (const Obstacle& o : w.obstacles) {
     if (o.motion != ObstacleMotion::Dynamic) continue;
@@ -136,6 +140,8 @@ WorldMetrics World::metrics() const {
     m.gravityEnergy -= o.body.mass * w.scene.forces.gravity.dot(o.body.state.position);
     if (!o.body.state.position.allFinite() || !o.body.state.linearVelocity.allFinite()) m.finite = false;
   }
+  // The elastic evaluation skips what it cannot measure, so a NaN state would report a strain of 0.
+  if (!m.finite) m.maxStrain = std::numeric_limits<double>::quiet_NaN();
   return m;
 }
 

@@ -35,7 +35,7 @@ struct SolverStats {
 };
 
 struct WorldMetrics {
-  double maxStrain = 0.0;        // largest principal Green strain over all triangles
+  double maxStrain = 0.0;        // largest principal Green strain over all triangles; NaN when not finite
   double kineticEnergy = 0.0;    // J (cloths and dynamic obstacles)
   double elasticEnergy = 0.0;    // membrane + bending (J)
   double gravityEnergy = 0.0;    // J, relative to y = 0 (cloths and dynamic obstacles)

@@ -8,6 +8,7 @@
 
 #include "util/input_error.h"
 #include "util/json_fields.h"
+#include "util/json_text.h"
 
 namespace weft {
 
@@ -92,14 +93,7 @@ TearTable loadTearTablePreset(const std::string& name, const std::vector<std::fi
     searched.push_back(dir.string());
     const std::filesystem::path file = dir / (name + ".json");
     if (plainName && std::filesystem::is_regular_file(file)) {
-      std::ifstream in(file);
-      if (!in) throw InputError(file.string(), "", "cannot open the tear table file");
-      nlohmann::json j;
-      try {
-        j = nlohmann::json::parse(in);
-      } catch (const nlohmann::json::exception& e) {
-        throw InputError(file.string(), "", std::string("invalid JSON: ") + e.what());
-      }
+      const nlohmann::json j = readJsonFile(file, "the tear table file");  // strict: util/json_text.h
       const FieldReader r(j, "", file.string());
       r.requiredString("name", "the preset's name");
       r.requiredString("source", "where the numbers come from");

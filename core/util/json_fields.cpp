@@ -1,6 +1,9 @@
 #include "util/json_fields.h"
 
+#include "util/echo.h"
+
 #include <algorithm>
+#include <cstdio>
 #include <cmath>
 #include <limits>
 
@@ -31,9 +34,10 @@ std::string asWritten(const json& value) {
     const double x = value.get<double>();
     return std::isnan(x) ? "NaN" : (x > 0 ? "inf" : "-inf");
   }
-  std::string text = value.dump();
-  if (text.size() > 60) text = text.substr(0, 57) + "...";
-  return text;
+  // Depth is bounded by the reader (json_text.h), so dump() cannot overflow the stack; what it
+  // prints is then cut to one short line.
+  if (value.is_string()) return "\"" + echo(value.get_ref<const std::string&>()) + "\"";
+  return echo(value.dump(-1, ' ', false, json::error_handler_t::replace));
 }
 
 std::string kind(const json& value) {
@@ -85,7 +89,7 @@ FieldReader::FieldReader(const json& object, std::string pointer, std::string fi
 void FieldReader::allowOnly(const std::vector<std::string>& allowed) const {
   for (const auto& item : object_.items()) {
     if (std::find(allowed.begin(), allowed.end(), item.key()) == allowed.end()) {
-      fail(pointer(item.key()), "unknown key \"" + item.key() + "\"; allowed keys here: " + joinNames(allowed));
+      fail(pointer(item.key()), "unknown key \"" + echo(item.key()) + "\"; allowed keys here: " + joinNames(allowed));
     }
   }
 }
@@ -114,6 +118,48 @@ double FieldReader::numberValue(const json& value, const std::string& at, Bound 
     fail(at, lead(description) + expectation(bound) + ", " + got(value));
   }
   return value.get<double>();
+}
+
+std::string formatNumber(double x) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", x);
+  return text;
+}
+
+std::string describe(const Range& range) {
+  char text[96];
+  std::snprintf(text, sizeof text, "%s%g, %g]%s%s", range.loOpen ? "(" : "[", range.lo, range.hi,
+                *range.unit ? " " : "", range.unit);
+  return text;
+}
+
+double FieldReader::number(const std::string& key, double fallback, const Range& range,
+                           const std::string& description) const {
+  if (!has(key)) return fallback;
+  return numberValue(at(key), pointer(key), range, description);
+}
+
+double FieldReader::numberValue(const json& value, const std::string& at, const Range& range,
+                                const std::string& description) const {
+  const bool inside = value.is_number() && std::isfinite(value.get<double>()) &&
+                      (range.loOpen ? value.get<double>() > range.lo : value.get<double>() >= range.lo) &&
+                      value.get<double>() <= range.hi;
+  if (!inside) fail(at, lead(description) + "must be a number in " + describe(range) + ", " + got(value));
+  return value.get<double>();
+}
+
+int FieldReader::integer(const std::string& key, int fallback, int minimum, int maximum) const {
+  if (!has(key)) return fallback;
+  return integerValue(at(key), pointer(key), minimum, maximum);
+}
+
+int FieldReader::integerValue(const json& value, const std::string& at, int minimum, int maximum) const {
+  const std::string expected =
+      "must be an integer in [" + std::to_string(minimum) + ", " + std::to_string(maximum) + "]";
+  if (!value.is_number()) fail(at, expected + ", " + got(value));
+  const double x = value.get<double>();
+  if (!std::isfinite(x) || x != std::floor(x) || x < minimum || x > maximum) fail(at, expected + ", " + got(value));
+  return static_cast<int>(x);
 }
 
 int FieldReader::integer(const std::string& key, int fallback, int minimum) const {

@@ -49,6 +49,17 @@ enum class Bound {
 bool satisfies(double x, Bound bound);
 std::string expectation(Bound bound);  // "must be a finite number >= 0"
 
+// The values that make physical (or practical) sense for a field: anything outside is refused at
+// load time with the range in the message, before it can cost hours or overflow a count.
+struct Range {
+  double lo = 0.0;
+  double hi = 0.0;
+  bool loOpen = false;  // true: lo itself is excluded, (lo, hi]
+  const char* unit = "";  // "m", "s", "m/s" (shown after the range)
+};
+std::string describe(const Range& range);  // "(0, 0.1] m"
+std::string formatNumber(double x);        // "%g": 1e-12, 0.005, 3e+151 (never 320 digits)
+
 class FieldReader {
  public:
   // Rejects a non-object. Use allowOnly() once the allowed keys are known (they may depend on a
@@ -84,9 +95,17 @@ class FieldReader {
   double numberValue(const nlohmann::json& value, const std::string& at, Bound bound,
                      const std::string& description = "") const;
 
+  // A finite number inside `range`.
+  double number(const std::string& key, double fallback, const Range& range, const std::string& description = "") const;
+  double numberValue(const nlohmann::json& value, const std::string& at, const Range& range,
+                     const std::string& description = "") const;
+
   // 32.0 is accepted as 32: some tools write every number as a float.
   int integer(const std::string& key, int fallback, int minimum) const;
   int integerValue(const nlohmann::json& value, const std::string& at, int minimum) const;
+  // An integer in [minimum, maximum].
+  int integer(const std::string& key, int fallback, int minimum, int maximum) const;
+  int integerValue(const nlohmann::json& value, const std::string& at, int minimum, int maximum) const;
 
   bool boolean(const std::string& key, bool fallback) const;
 

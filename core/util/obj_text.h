@@ -1,7 +1,10 @@
 #pragma once
-// Checks on the text of an OBJ file that tinyobjloader does not make: it reads a malformed or
-// "nan" coordinate as 0 without a word, which would change a cloth's or a tool's shape silently.
-// Shared by the cloth loader (mesh/obj_import) and the obstacle loader (rigid/closed_obj_import).
+// Checks on the text of an OBJ file that tinyobjloader does not make. It reads a malformed or
+// "nan" coordinate as 0, a `v` line with two numbers as a vertex with z = 0, and a face index
+// past 2^32 modulo 2^32 (4294967299 becomes 3), all without a word, and keeps a UTF-8 byte order
+// mark as part of the first keyword (dropping the first vertex). Any of these would change a
+// cloth's or a tool's shape silently. Shared by the cloth loader (mesh/obj_import) and the
+// obstacle loader (rigid/closed_obj_import).
 #include <initializer_list>
 #include <optional>
 #include <string>
@@ -14,8 +17,13 @@ struct ObjTextProblem {
   std::string message;  // "'1.0x' is not a number", "non-finite value 'nan'"
 };
 
-// The first number on a line whose keyword is one of `keywords` (e.g. "v", "vt") that does not
-// parse in full or is not finite.
+// The first malformed line: on a line whose keyword is one of `keywords` (e.g. "v", "vt"), a
+// number that does not parse in full or is not finite, or too few numbers (a `v` needs x, y and
+// z; a `vt` needs u and v); on an `f` line, an index that is not a non-zero integer that fits
+// an int.
 std::optional<ObjTextProblem> findBadCoordinate(const std::string& text, std::initializer_list<std::string_view> keywords);
+
+// `text` without a leading UTF-8 byte order mark, which some Windows tools write.
+std::string withoutByteOrderMark(std::string text);
 
 }  // namespace weft

@@ -210,14 +210,160 @@ TEST_F(WeftCli, StateHashDoesNotDependOnThreads) {
   EXPECT_EQ(one["state_hash"], two["state_hash"]);
 }
 
-TEST_F(WeftCli, NonFiniteRunStillWritesMetricsAndExits3) {
-  // Symplectic Euler at 60 Hz on a stiff woven fabric is far past its stability limit.
-  const Result r = weft("run " + quoted(kHangingSheet) +
-                        " --set 'cloths.0.mesh.grid.resolution=[8,8]' --set solver.integrator=symplectic_euler"
-                        " --set cloths.0.material=isotropic-stiff --frames 300 --quiet --out result");
+// Symplectic Euler at 60 Hz on a stiff woven fabric is far past its stability limit.
+const std::string kUnstable =
+    "--set 'cloths.0.mesh.grid.resolution=[8,8]' --set solver.integrator=symplectic_euler"
+    " --set cloths.0.material=isotropic-stiff --frames 300 --quiet --out result";
+
+TEST_F(WeftCli, UnhealthyRunStopsWhileFiniteAndExits3) {
+  const Result r = weft("run " + quoted(kHangingSheet) + " " + kUnstable);
   EXPECT_EQ(r.exitCode, 3) << r.output;
+  EXPECT_NE(r.output.find("unhealthy run at step "), std::string::npos) << r.output;
   ASSERT_TRUE(fs::is_regular_file(work() / "result" / "metrics.json")) << r.output;
-  EXPECT_EQ(readJson(work() / "result" / "metrics.json")["finite"], false);
+  const json m = readJson(work() / "result" / "metrics.json");
+  EXPECT_EQ(m["healthy"], false);
+  EXPECT_EQ(m["finite"], true) << "stopped before the state turned NaN";
+  EXPECT_TRUE(m["max_strain"].is_number()) << m.dump();
+  EXPECT_LT(m["steps"].get<int>(), 600);
+  EXPECT_EQ(m["health"]["first_failing_step"], m["steps"]);
+  for (const char* key : {"time_s", "check", "stage", "value", "limit", "message"}) {
+    EXPECT_TRUE(m["health"].contains(key)) << "health lacks " << key;
+  }
+}
+
+TEST_F(WeftCli, NonFiniteRunStillWritesMetricsAndExits3) {
+  // --keep-going runs past the health check's warning until the state is NaN.
+  const Result r = weft("run " + quoted(kHangingSheet) + " " + kUnstable + " --keep-going");
+  EXPECT_EQ(r.exitCode, 3) << r.output;
+  EXPECT_NE(r.output.find("warning: unhealthy run"), std::string::npos) << r.output;
+  ASSERT_TRUE(fs::is_regular_file(work() / "result" / "metrics.json")) << r.output;
+  const json m = readJson(work() / "result" / "metrics.json");
+  EXPECT_EQ(m["finite"], false);
+  EXPECT_EQ(m["healthy"], false);
+  // Never 0 or null for a state that has no strain: absent.
+  EXPECT_FALSE(m.contains("max_strain")) << m.dump();
+}
+
+TEST_F(WeftCli, FailingLinearSolvesAreNotReportedAsAGoodRun) {
+  const std::string failing =
+      " " + kTiny + " --set solver.linear_solver.max_iterations=1 --set solver.linear_solver.tolerance=1e-14 --out result";
+  const Result r = weft("run " + quoted(kHangingSheet) + failing);
+  EXPECT_EQ(r.exitCode, 3) << r.output;
+  EXPECT_NE(r.output.find("linear_solver.max_iterations"), std::string::npos) << "names the knob: " << r.output;
+  const json m = readJson(work() / "result" / "metrics.json");
+  EXPECT_EQ(m["healthy"], false);
+  EXPECT_EQ(m["health"]["check"], "linear-solve");
+  EXPECT_EQ(m["health"]["first_failing_step"], 3);
+  EXPECT_EQ(m["steps"], 3);
+
+  const Result going = weft("run " + quoted(kHangingSheet) + failing + " --keep-going --obj");
+  EXPECT_EQ(going.exitCode, 3) << going.output;
+  const json all = readJson(work() / "result" / "metrics.json");
+  EXPECT_EQ(all["steps"], 10) << "--keep-going finishes the run";
+  EXPECT_EQ(all["health"]["first_failing_step"], 3);
+  EXPECT_TRUE(fs::is_regular_file(work() / "result" / "frames" / "frame_0005.obj"));
+
+  const Result healthy = weft("run " + quoted(kHangingSheet) + " " + kTiny + " --quiet --out fine");
+  EXPECT_EQ(healthy.exitCode, 0) << healthy.output;
+  const json fine = readJson(work() / "fine" / "metrics.json");
+  EXPECT_EQ(fine["healthy"], true);
+  EXPECT_FALSE(fine.contains("health"));
+}
+
+TEST_F(WeftCli, AKilledRerunLeavesThePreviousOutputAsItWas) {
+  ASSERT_EQ(weft("run " + quoted(kHangingSheet) + " " + kTiny + " --quiet --obj --out result").exitCode, 0);
+  const json before = readJson(work() / "result" / "metrics.json");
+  // A long rerun into the same folder, killed after a second: it must not leave its frames next
+  // to the first run's metrics.json.
+  const Result killed = weft("run " + quoted(kHangingSheet) +
+                                 " --set 'cloths.0.mesh.grid.resolution=[24,24]' --frames 100000 --quiet --obj --out result",
+                             "timeout -s KILL 1");
+  EXPECT_NE(killed.exitCode, 0);
+  EXPECT_EQ(readJson(work() / "result" / "metrics.json"), before);
+  int frames = 0;
+  for (const auto& entry : fs::directory_iterator(work() / "result" / "frames")) frames += entry.path().extension() == ".obj";
+  EXPECT_EQ(frames, 6) << "frames 0..5 of the first run, and no others";
+  std::ifstream obj(work() / "result" / "frames" / "frame_0000.obj");
+  std::string text((std::istreambuf_iterator<char>(obj)), std::istreambuf_iterator<char>());
+  int vertices = 0;
+  for (std::size_t at = text.find("\nv "); at != std::string::npos; at = text.find("\nv ", at + 1)) ++vertices;
+  EXPECT_EQ(vertices, 64) << "frame 0 is still the 8 x 8 sheet of the first run";
+
+  // The next complete run replaces everything and clears what the killed one staged.
+  ASSERT_EQ(weft("run " + quoted(kHangingSheet) + " --set 'cloths.0.mesh.grid.resolution=[8,8]' --frames 2 --quiet --obj --out result").exitCode, 0);
+  EXPECT_EQ(readJson(work() / "result" / "metrics.json")["steps"], 4);
+  EXPECT_FALSE(fs::exists(work() / "result" / ".weft-partial"));
+  EXPECT_FALSE(fs::exists(work() / "result" / "frames" / "frame_0003.obj"));
+}
+
+TEST_F(WeftCli, ALongRunSaysSoBeforeItStartsEvenWhenQuiet) {
+  // A million frames of a 256 x 256 sheet: weeks of work. One line, then the run (killed here).
+  const Result r = weft("run " + quoted(kHangingSheet) +
+                            " --set 'cloths.0.mesh.grid.resolution=[256,256]' --frames 1000000 --quiet --out result",
+                        "timeout -s KILL 2");
+  EXPECT_EQ(r.output.rfind("weft: a long run: 1000000 frames x 2 steps x 1 substep(s) of 65536 cloth vertices, roughly ", 0),
+            0u)
+      << r.output;
+  EXPECT_NE(r.output.find(" days"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(work() / "result" / "metrics.json"));
+
+  const Result small = weft("run " + quoted(kHangingSheet) + " " + kTiny + " --quiet --out small");
+  EXPECT_EQ(small.output, "") << "a short run says nothing with --quiet";
+}
+
+TEST_F(WeftCli, HostileInputIsBadInputWithAShortMessage) {
+  const auto expectShortBadInput = [&](const std::string& arguments, const std::string& phrase) {
+    SCOPED_TRACE(arguments.substr(0, 120));
+    const Result r = weft(arguments);
+    EXPECT_EQ(r.exitCode, 2) << r.output.substr(0, 2000);
+    EXPECT_NE(r.output.find(phrase), std::string::npos) << r.output.substr(0, 2000);
+    EXPECT_LT(r.output.size(), 700u) << r.output.substr(0, 2000);
+  };
+  // Nested 100,000 deep: once a segfault in the JSON library's dump().
+  const int depth = 100'000;
+  std::ofstream(work() / "deep.json") << R"({"cloths": [{"mesh": {"grid": {}}, "material": "royal-target"}], "solver": {"dt": )"
+                                      << std::string(depth, '[') << std::string(depth, ']') << "}}";
+  expectShortBadInput("validate deep.json", "nested deeper than 64");
+  std::ofstream(work() / "twice.json") << R"({"cloths": [{"mesh": {"grid": {}}, "material": "royal-target"}],
+                                             "solver": {"dt": 0.01, "dt": 0.5}})";
+  expectShortBadInput("run twice.json --out result", "duplicate key \"dt\"");
+  EXPECT_FALSE(fs::exists(work() / "result"));
+  // Once a segfault in the OpenMP runtime, and once "not in range" with a 309-digit bound.
+  expectShortBadInput("run " + quoted(kHangingSheet) + " --threads 100000", "[1, 256]");
+  expectShortBadInput("run " + quoted(kHangingSheet) + " --frames abc", "'abc' is not an integer in [0, 1000000]");
+  // Once exit 1 (bad_alloc, "File name too long", json type_error 316).
+  expectShortBadInput("validate " + quoted(kHangingSheet) + " --set 'cloths.0.mesh.grid.resolution=[1000000,1000000]'",
+                      "/cloths/0/mesh/grid/resolution/0");
+  expectShortBadInput("run " + quoted(kHangingSheet) + " --set contact.thickness=3.7 --out result", "(0, 0.1] m");
+  EXPECT_FALSE(fs::exists(work() / "result"));
+  expectShortBadInput("validate " + quoted(kHangingSheet) + " --set cloths.0.material=" + std::string(300, 'x'),
+                      "at most 100 characters");
+  expectShortBadInput("validate " + quoted(kHangingSheet) + " --set $(printf 'name=\\377')", "not valid UTF-8");
+  // Once a 1 MB echo of the name, and 355 KB of one line per vertex.
+  expectShortBadInput("validate " + quoted(kHangingSheet) + " --set name=" + std::string(100'000, 'n'), "/name");
+  expectShortBadInput("validate " + quoted(kHangingSheet) + " --set cloths.0.mesh.grid.width=1e308", "(0, 100] m");
+}
+
+TEST_F(WeftCli, ValidateShowsHowAnObjClothsVLinesBecameVertices) {
+  std::ofstream(work() / "seam.obj") << "v 9 9 9\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 2 0.5 0\n"
+                                        "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nvt 2 0\nvt 2 1\nvt 3 0.5\n"
+                                        "f 2/1 3/2 4/3\nf 2/1 4/3 5/4\nf 3/5 6/7 4/6\n";
+  json scene = badScene();
+  scene.erase("solver");
+  scene["cloths"][0]["mesh"] = {{"obj", {{"path", (work() / "seam.obj").string()}}}};
+  scene["cloths"][0]["pins"] = json::parse(R"([{"vertices": [2]}])");
+  const fs::path file = writeScene("seam.json", scene);
+  const Result summary = weft("validate " + quoted(file));
+  EXPECT_EQ(summary.exitCode, 0) << summary.output;
+  EXPECT_NE(summary.output.find("6 `v` lines of seam.obj"), std::string::npos) << summary.output;
+  EXPECT_NE(summary.output.find("2 split on UV seams, 1 used by no face"), std::string::npos) << summary.output;
+  const Result listed = weft("validate " + quoted(file) + " --vertex-map");
+  EXPECT_NE(listed.output.find("v 0 -> (unused)"), std::string::npos) << listed.output;
+  EXPECT_NE(listed.output.find("v 2 -> 1, 2"), std::string::npos) << listed.output;
+  EXPECT_NE(listed.output.find("v 5 -> 6"), std::string::npos) << listed.output;
+  const Result unused = weft("validate " + quoted(file) + " --set 'cloths.0.pins.0.vertices=[0]'");
+  EXPECT_EQ(unused.exitCode, 2) << unused.output;
+  EXPECT_NE(unused.output.find("which no face uses"), std::string::npos) << unused.output;
 }
 
 TEST_F(WeftCli, EditRejectsABadSceneBeforeOpeningAnything) {

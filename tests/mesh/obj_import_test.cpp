@@ -233,8 +233,87 @@ TEST(ObjImport, NamesTheLineOfAMalformedCoordinate) {
                  "not a number");
 }
 
-TEST(ObjImport, NamesAFileWithAnUnparsableFace) {
-  expectRejected(writeObj("v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nf 1/1 0/2 3/3\n"), "", "cannot parse");
+TEST(ObjImport, NamesTheLineOfAnUnparsableFace) {
+  // OBJ indices count from 1: a 0 is no index (tinyobjloader says only "cannot parse").
+  expectRejected(writeObj("v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nf 1/1 0/2 3/3\n"), "line 7",
+                 "out of range");
+  expectRejected(writeObj("v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nf 1/1 2x/2 3/3\n", "b.obj"), "line 7",
+                 "not a face corner");
+}
+
+TEST(ObjImport, RefusesAFaceIndexPastAnInt) {
+  // tinyobjloader reads 4294967299 modulo 2^32, as 3: a valid-looking triangle from a broken file.
+  expectRejected(writeObj("v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nf 1/1 2/2 4294967299/3\n"), "line 7",
+                 "4294967299");
+  expectRejected(writeObj("v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nf 1/1 2/2 3/99999999999999999999\n",
+                          "b.obj"),
+                 "line 7", "out of range");
+}
+
+TEST(ObjImport, RefusesAVertexWithTwoCoordinates) {
+  // tinyobjloader would read `v 1 0` as (1, 0, 0) and carry on.
+  expectRejected(writeObj("v 0 0 0\nv 1 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nf 1/1 2/2 3/3\n"), "line 2",
+                 "at least 3 numbers, got 2");
+  expectRejected(writeObj("v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1\nvt 0 1\nf 1/1 2/2 3/3\n", "b.obj"), "line 5",
+                 "at least 2 numbers, got 1");
+}
+
+TEST(ObjImport, ReadsAFileThatStartsWithAByteOrderMark) {
+  // The mark used to hide the first `v` keyword: one vertex fewer, then "index out of range".
+  const ClothMesh mesh = load(writeObj("\xEF\xBB\xBFv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nf 1/1 2/2 3/3\n"));
+  ASSERT_EQ(mesh.vertexCount(), 3);
+  EXPECT_EQ(mesh.x[0], Vec3(0, 0, 0));
+  EXPECT_EQ(mesh.x[2], Vec3(0, 1, 0));
+}
+
+TEST(ObjImport, NumbersClothVerticesInVLineOrder) {
+  // Faces first use v 4, v 3, v 1, v 2; cloth vertex k is still the k-th `v` line.
+  const fs::path path = writeObj(
+      "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n"
+      "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n"
+      "f 4/4 3/3 1/1\nf 3/3 2/2 1/1\n");
+  ObjSpec spec;
+  spec.path = path;
+  ObjVertexMap map;
+  const ClothMesh mesh = loadObjMesh(spec, "", &map);
+  ASSERT_EQ(mesh.vertexCount(), 4);
+  EXPECT_EQ(mesh.x[0], Vec3(0, 0, 0));
+  EXPECT_EQ(mesh.x[1], Vec3(1, 0, 0));
+  EXPECT_EQ(mesh.x[2], Vec3(1, 1, 0));
+  EXPECT_EQ(mesh.x[3], Vec3(0, 1, 0));
+  EXPECT_TRUE(map.isIdentity());
+  // Rest coordinates moved with their vertices (here UV = x, y).
+  for (const Triangle& t : mesh.tris) {
+    for (int k = 0; k < 3; ++k) EXPECT_EQ(t.rest[k], mesh.x[t.v[k]].head<2>());
+  }
+  EXPECT_TRUE(checkMesh(mesh).empty());
+}
+
+TEST(ObjImport, MapsSeamAndUnusedVLinesToTheirClothVertices) {
+  // v 1 is used by no face. A second piece (face 3) meets the square along v 3 - v 4 in space but
+  // with its own UVs: a UV seam, so v 3 and v 4 each become two cloth vertices.
+  const fs::path path = writeObj(
+      "v 9 9 9\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 2 0.5 0\n"
+      "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nvt 2 0\nvt 2 1\nvt 3 0.5\n"
+      "f 2/1 3/2 4/3\nf 2/1 4/3 5/4\nf 3/5 6/7 4/6\n");
+  ObjSpec spec;
+  spec.path = path;
+  ObjVertexMap map;
+  const ClothMesh mesh = loadObjMesh(spec, "", &map);
+  ASSERT_EQ(map.objVertexCount(), 6);
+  EXPECT_TRUE(map.clothVertices[0].empty());
+  EXPECT_EQ(map.clothVertices[1], (std::vector<int>{0}));
+  EXPECT_EQ(map.clothVertices[2], (std::vector<int>{1, 2}));  // first used by face 1, then by face 3
+  EXPECT_EQ(map.clothVertices[3], (std::vector<int>{3, 4}));
+  EXPECT_EQ(map.clothVertices[4], (std::vector<int>{5}));
+  EXPECT_EQ(map.clothVertices[5], (std::vector<int>{6}));
+  EXPECT_FALSE(map.isIdentity());
+  ASSERT_EQ(mesh.vertexCount(), 7);
+  const std::vector<Vec3> positions{{9, 9, 9}, {0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {2, 0.5, 0}};
+  for (std::size_t line = 0; line < map.clothVertices.size(); ++line) {
+    for (int v : map.clothVertices[line]) EXPECT_EQ(mesh.x[v], positions[line]) << "v line " << line;
+  }
+  EXPECT_TRUE(checkMesh(mesh).empty());
 }
 
 TEST(ObjImport, NamesAFileWithAnIndexOutOfRange) {

@@ -294,9 +294,9 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"NaNByOverride", "", {"solver.dt=NaN"}, "/solver/dt", "solver.dt=NaN"},
         BadCase{"UnknownKeyByOverride", "", {"solver.foo=1"}, "/solver/foo", "solver.foo=1"},
         BadCase{"MalformedOverride", "", {"solver.dt"}, "override", "solver.dt"},
-        BadCase{"ZeroSubsteps", R"({"solver": {"substeps": 0}})", {}, "/solver/substeps", ">= 1"},
+        BadCase{"ZeroSubsteps", R"({"solver": {"substeps": 0}})", {}, "/solver/substeps", "[1, 1000]"},
         BadCase{"FractionalSubsteps", R"({"solver": {"substeps": 1.5}})", {}, "/solver/substeps", "integer"},
-        BadCase{"ZeroThreads", R"({"solver": {"threads": 0}})", {}, "/solver/threads", ">= 1"},
+        BadCase{"ZeroThreads", R"({"solver": {"threads": 0}})", {}, "/solver/threads", "[1, 256]"},
         BadCase{"NegativeTolerance", R"({"solver": {"linear_solver": {"tolerance": -1e-6}}})", {},
                 "/solver/linear_solver/tolerance", ">= 0"},
         BadCase{"UnknownIntegrator", R"({"solver": {"integrator": "verlet"}})", {}, "/solver/integrator", "verlet"},
@@ -304,8 +304,35 @@ INSTANTIATE_TEST_SUITE_P(
                 "/solver/linear_solver/type", "cholmod"},
         BadCase{"UnknownPreconditioner", R"({"solver": {"linear_solver": {"preconditioner": "ilu"}}})", {},
                 "/solver/linear_solver/preconditioner", "lagged_cholesky"},
-        BadCase{"NegativeFrames", R"({"output": {"frames": -1}})", {}, "/output/frames", ">= 0"},
-        BadCase{"ZeroFps", R"({"output": {"fps": 0}})", {}, "/output/fps", "positive"},
+        BadCase{"NegativeFrames", R"({"output": {"frames": -1}})", {}, "/output/frames", "[0, 1000000]"},
+        BadCase{"ZeroFps", R"({"output": {"fps": 0}})", {}, "/output/fps", "(0, 10000]"},
+        // Values outside physical sense (scene_limits.h): each once crashed, ran out of memory or
+        // ran for hours.
+        BadCase{"TooManyThreads", "", {"solver.threads=100000"}, "/solver/threads", "[1, 256]"},
+        BadCase{"HugeResolution", "", {"cloths.0.mesh.grid.resolution=[1000000,1000000]"},
+                "/cloths/0/mesh/grid/resolution/0", "[2, 4096]"},
+        BadCase{"IntMaxResolution", "", {"cloths.0.mesh.grid.resolution=[2147483647,2]"},
+                "/cloths/0/mesh/grid/resolution/0", "[2, 4096]"},
+        BadCase{"TooManyGridVertices", "", {"cloths.0.mesh.grid.resolution=[4096,4096]"},
+                "/cloths/0/mesh/grid/resolution", "at most 1048576"},
+        BadCase{"HugeUvScale", "", {R"(cloths.0.mesh={"obj": {"path": "degenerate.obj", "uv_scale": 1e300}})"},
+                "/cloths/0/mesh/obj/uv_scale", "(0, 1000] m per UV unit"},
+        BadCase{"HugeGridWidth", "", {"cloths.0.mesh.grid.width=1e308"}, "/cloths/0/mesh/grid/width", "(0, 100] m"},
+        BadCase{"ThickContact", R"({"contact": {"thickness": 3.7}})", {}, "/contact/thickness", "(0, 0.1] m"},
+        BadCase{"TinyDt", "", {"solver.dt=1e-12"}, "/solver/dt", "[1e-06, 1] s"},
+        BadCase{"HugeDt", R"({"solver": {"dt": 1e5}})", {}, "/solver/dt", "[1e-06, 1] s"},
+        BadCase{"IntMaxSubsteps", "", {"solver.substeps=2147483647"}, "/solver/substeps", "[1, 1000]"},
+        BadCase{"HugeGravity", "", {"forces.gravity=[0,-1e12,0]"}, "/forces/gravity", "at most 1000 m/s^2"},
+        BadCase{"HugeWind", R"({"forces": {"wind": {"velocity": [1e5, 0, 0]}}})", {}, "/forces/wind/velocity",
+                "at most 340 m/s"},
+        BadCase{"MillionsOfStepsPerFrame", R"({"solver": {"dt": 1e-6}, "output": {"fps": 0.001}})", {}, "/output/fps",
+                "steps per frame"},
+        BadCase{"HugeNumberByOverride", "", {"solver.dt=1e999"}, "override", "too large"},
+        BadCase{"LongPresetName", "", {"cloths.0.material=" + std::string(300, 'a')}, "/cloths/0/material",
+                "at most 100 characters"},
+        BadCase{"LongTearTableName", "", {"cloths.0.tear_table=" + std::string(300, 'a')}, "/cloths/0/tear_table",
+                "at most 100 characters"},
+        BadCase{"NulInObjPath", "", {R"(cloths.0.mesh={"obj": {"path": "a\u0000b.obj"}})"}, "override", "\\u0000"},
         BadCase{"GustOutOfRange", R"({"forces": {"wind": {"gust_amplitude": 2}}})", {},
                 "/forces/wind/gust_amplitude", "[0, 1]"},
         BadCase{"ColourOutOfRange", cloth(R"("appearance": {"color": [0.2, 1.5, 0.1]})"), {},
@@ -317,7 +344,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"GravityNotAVector", R"({"forces": {"gravity": [0, -9.81]}})", {}, "/forces/gravity", "3 finite"},
         BadCase{"StageNotBool", R"({"stages": {"wind": 1}})", {}, "/stages/wind", "true or false"},
         BadCase{"ResolutionTooSmall", R"({"cloths": [{"mesh": {"grid": {"resolution": [1, 8]}}, "material": "royal-target"}]})",
-                {}, "/cloths/0/mesh/grid/resolution/0", ">= 2"},
+                {}, "/cloths/0/mesh/grid/resolution/0", "[2, 4096]"},
         BadCase{"GridAndObj", R"({"cloths": [{"mesh": {"grid": {}, "obj": {"path": "degenerate.obj"}}, "material": "royal-target"}]})",
                 {}, "/cloths/0/mesh", "exactly one"},
         BadCase{"MissingObjFile", R"({"cloths": [{"mesh": {"obj": {"path": "nowhere.obj"}}, "material": "royal-target"}]})",
@@ -369,6 +396,101 @@ TEST(SceneJson, InvalidJsonNamesTheFile) {
     EXPECT_NE(std::string(e.what()).find("broken.json"), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find("not valid JSON"), std::string::npos) << e.what();
   }
+}
+
+// Runs `load` and returns the InputError it throws (failing the test when there is none).
+template <typename Load>
+InputError inputErrorOf(Load&& load) {
+  try {
+    load();
+  } catch (const InputError& e) {
+    return e;
+  }
+  ADD_FAILURE() << "no InputError";
+  return InputError("", "", "");
+}
+
+TEST(SceneJson, DuplicateKeysAreRefusedNamingTheKey) {
+  TempDir dir;
+  // nlohmann::json keeps the last of two equal keys without a word: dt would silently be 0.5.
+  const fs::path file = dir.write(
+      "twice.json", R"({"cloths": [{"mesh": {"grid": {}}, "material": "royal-target"}],
+                        "solver": {"dt": 0.01, "substeps": 2, "dt": 0.5}})");
+  const InputError e = inputErrorOf([&] { (void)loadScene(file); });
+  EXPECT_EQ(e.file(), file.string());
+  EXPECT_EQ(e.field(), "/solver/dt");
+  EXPECT_NE(std::string(e.what()).find("duplicate key \"dt\""), std::string::npos) << e.what();
+
+  const InputError byOverride =
+      inputErrorOf([&] { (void)loadScene(kPresetScenes / "hanging-sheet.json", {R"(solver={"dt": 0.01, "dt": 0.02})"}); });
+  EXPECT_NE(std::string(byOverride.what()).find("duplicate key \"dt\""), std::string::npos) << byOverride.what();
+  EXPECT_NE(byOverride.field().find("override"), std::string::npos) << byOverride.what();
+}
+
+TEST(SceneJson, DeepNestingIsRefusedWithoutCrashing) {
+  // 100,000 levels once overflowed the stack in dump() while the error message was being built.
+  const int depth = 100'000;
+  const std::string deep = std::string(depth, '[') + std::string(depth, ']');
+  TempDir dir;
+  const fs::path file =
+      dir.write("deep.json", R"({"cloths": [{"mesh": {"grid": {}}, "material": "royal-target"}], "solver": {"dt": )" +
+                                 deep + "}}");
+  const InputError e = inputErrorOf([&] { (void)loadScene(file); });
+  EXPECT_EQ(e.field().rfind("/solver/dt/0/0/0", 0), 0u) << e.what();
+  EXPECT_NE(std::string(e.what()).find("nested deeper than 64"), std::string::npos) << e.what();
+  EXPECT_LT(std::string(e.what()).size(), 500u);
+
+  const InputError byOverride =
+      inputErrorOf([&] { (void)loadScene(kPresetScenes / "hanging-sheet.json", {"solver.dt=" + deep}); });
+  EXPECT_NE(std::string(byOverride.what()).find("nested deeper than 64"), std::string::npos) << byOverride.what();
+  EXPECT_LT(std::string(byOverride.what()).size(), 800u);
+}
+
+TEST(SceneJson, OverrideThatIsNotUtf8IsRefused) {
+  // Before, the bytes became a JSON string and dump() threw type_error 316: "internal error", exit 1.
+  const InputError e =
+      inputErrorOf([&] { (void)loadScene(kPresetScenes / "hanging-sheet.json", {"name=\xff\xfe"}); });
+  EXPECT_NE(std::string(e.what()).find("not valid UTF-8"), std::string::npos) << e.what();
+  EXPECT_NE(std::string(e.what()).find("\\xFF\\xFE"), std::string::npos) << "bytes shown escaped: " << e.what();
+}
+
+TEST(SceneJson, EchoedValuesAreShortAndOnOneLine) {
+  const std::string huge(100'000, 'a');
+  const InputError name = inputErrorOf([&] { (void)loadScene(kPresetScenes / "hanging-sheet.json", {"name=" + huge}); });
+  const std::string what = name.what();
+  EXPECT_EQ(name.field(), "/name");
+  EXPECT_LT(what.size(), 600u) << "a 100 KB name once came back in full";
+  EXPECT_NE(what.find("…"), std::string::npos) << what;
+  EXPECT_NE(what.find("100000 characters"), std::string::npos) << what;
+
+  // "\u0000" once cut the message short; a control character is shown escaped instead.
+  TempDir dir;
+  const fs::path file = dir.write(
+      "nul.json", R"({"cloths": [{"mesh": {"grid": {}}, "material": "royal-target"}], "name": "a\u0000b"})");
+  const InputError nul = inputErrorOf([&] { (void)loadScene(file); });
+  EXPECT_EQ(nul.field(), "/name");
+  EXPECT_NE(std::string(nul.what()).find("\\u0000"), std::string::npos) << nul.what();
+  const InputError tab = inputErrorOf([&] { (void)loadScene(kPresetScenes / "hanging-sheet.json", {"name=\"a\\tb\""}); });
+  EXPECT_EQ(std::string(tab.what()).find('\t'), std::string::npos) << tab.what();
+  EXPECT_NE(std::string(tab.what()).find("a\\tb"), std::string::npos) << tab.what();
+}
+
+TEST(SceneJson, AnObjClothIsPinnedByItsVLines) {
+  // v lines in an order no face follows: face 1 first uses v 4, then v 3, then v 1.
+  TempDir dir;
+  dir.write("shuffled.obj",
+            "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n"
+            "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n"
+            "f 4/4 3/3 1/1\nf 3/3 2/2 1/1\n");
+  json scene = minimalScene();
+  scene["cloths"][0]["mesh"] = json::parse(R"({"obj": {"path": "shuffled.obj"}})");
+  scene["cloths"][0]["pins"] = json::parse(R"([{"vertices": [3]}])");
+  const fs::path file = dir.write("pinned.json", scene.dump());
+  EXPECT_NO_THROW((void)loadScene(file));
+  // Only 4 v lines: id 4 is out of range, and the message says ids count v lines.
+  const InputError e = inputErrorOf([&] { (void)loadScene(file, {"cloths.0.pins.0.vertices=[4]"}); });
+  EXPECT_EQ(e.field(), "/cloths/0/pins/0/vertices/0");
+  EXPECT_NE(std::string(e.what()).find("`v` lines"), std::string::npos) << e.what();
 }
 
 TEST(SceneJson, MissingFileIsAnInputError) {

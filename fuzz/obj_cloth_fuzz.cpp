@@ -1,0 +1,33 @@
+// libFuzzer target: the OBJ cloth loader (mesh/obj_import.h) on arbitrary bytes, written to a
+// file as a scene's mesh would be. Any input must give a valid cloth mesh or an InputError.
+#include <unistd.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <cstdlib>
+#include <fstream>
+#include <string>
+
+#include "mesh/mesh_check.h"
+#include "mesh/obj_import.h"
+#include "util/input_error.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  static const std::string path = "/tmp/weft_obj_cloth_fuzz_" + std::to_string(getpid()) + ".obj";
+  std::ofstream(path, std::ios::binary | std::ios::trunc).write(reinterpret_cast<const char*>(data),
+                                                                  static_cast<std::streamsize>(size));
+  weft::ObjSpec spec;
+  spec.path = path;
+  try {
+    weft::ObjVertexMap map;
+    const weft::ClothMesh mesh = weft::loadObjMesh(spec, "fuzz.json", &map);
+    // A mesh that loads is a valid cloth and every cloth vertex is some `v` line's.
+    if (!weft::checkMesh(mesh).empty()) std::abort();
+    std::size_t mapped = 0;
+    for (const auto& ids : map.clothVertices) mapped += ids.size();
+    if (mapped != static_cast<std::size_t>(mesh.vertexCount())) std::abort();
+  } catch (const weft::InputError& e) {
+    if (std::string(e.what()).size() > 2000) std::abort();
+  }
+  return 0;
+}
