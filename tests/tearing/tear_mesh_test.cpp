@@ -99,21 +99,31 @@ TEST(TearMesh, TheSplitPointLiesOnTheTearLineInEveryTriangle) {
   }
 }
 
+// What a tear must keep: the totals of a mesh before it, compared with the mesh after it (mass,
+// momentum and rest area to round-off; lumped masses as a from-scratch assignment gives them).
+struct Totals {
+  double mass, area;
+  Vec3 momentum;
+  explicit Totals(const ClothMesh& mesh)
+      : mass(test::totalMass(mesh)), area(test::totalRestArea(mesh)), momentum(test::totalMomentum(mesh)) {}
+};
+
+void expectKept(const Totals& before, const ClothMesh& mesh) {
+  EXPECT_NEAR(test::totalMass(mesh), before.mass, 1e-12 * before.mass);
+  EXPECT_LE((test::totalMomentum(mesh) - before.momentum).norm(), 1e-12 * test::momentumScale(mesh));
+  EXPECT_NEAR(test::totalRestArea(mesh), before.area, 1e-12 * before.area);
+  ClothMesh reassigned = mesh;
+  assignLumpedMasses(reassigned, kDensity);
+  for (int i = 0; i < mesh.vertexCount(); ++i) EXPECT_NEAR(mesh.mass[i], reassigned.mass[i], 1e-15) << i;
+}
+
 TEST(TearMesh, KeepsMassMomentumAndRestArea) {
   for (double deg : {0.0, 17.0, 45.0, 62.0, 133.0}) {
     ClothMesh mesh = grid(6, 7);
-    const double mass = test::totalMass(mesh);
-    const Vec3 momentum = test::totalMomentum(mesh);
-    const double area = test::totalRestArea(mesh);
+    const Totals before(mesh);
     TopologyChange change;
     ASSERT_TRUE(tearThroughVertex(mesh, 14, atDegrees(deg), TearGuards{}, kDensity, change)) << deg;
-    EXPECT_NEAR(test::totalMass(mesh), mass, 1e-12 * mass);
-    EXPECT_LE((test::totalMomentum(mesh) - momentum).norm(), 1e-12 * test::momentumScale(mesh));
-    EXPECT_NEAR(test::totalRestArea(mesh), area, 1e-12 * area);
-    // And the lumped masses are what a from-scratch assignment gives.
-    ClothMesh reassigned = mesh;
-    assignLumpedMasses(reassigned, kDensity);
-    for (int i = 0; i < mesh.vertexCount(); ++i) EXPECT_NEAR(mesh.mass[i], reassigned.mass[i], 1e-15) << i;
+    expectKept(before, mesh);
   }
 }
 
@@ -229,18 +239,11 @@ TEST(TearMesh, AMoveKeepsMassMomentumRestAreaAndTheDeformation) {
     for (const Triangle& t : mesh.tris) {
       for (int k = 0; k < 3; ++k) mesh.x[t.v[k]] = map * Vec3(t.rest[k].x(), t.rest[k].y(), 0.0) + shift;
     }
-    const double mass = test::totalMass(mesh);
-    const Vec3 momentum = test::totalMomentum(mesh);
-    const double area = test::totalRestArea(mesh);
+    const Totals before(mesh);
     TopologyChange change;
     ASSERT_TRUE(tearThroughVertex(mesh, 14, atDegrees(deg), TearGuards{}, kDensity, change)) << deg;
     EXPECT_FALSE(change.movedVertices.empty()) << deg << " degrees: a move was expected";
-    EXPECT_NEAR(test::totalMass(mesh), mass, 1e-12 * mass);
-    EXPECT_LE((test::totalMomentum(mesh) - momentum).norm(), 1e-12 * test::momentumScale(mesh));
-    EXPECT_NEAR(test::totalRestArea(mesh), area, 1e-12 * area);
-    ClothMesh reassigned = mesh;
-    assignLumpedMasses(reassigned, kDensity);
-    for (int i = 0; i < mesh.vertexCount(); ++i) EXPECT_NEAR(mesh.mass[i], reassigned.mass[i], 1e-15) << i;
+    expectKept(before, mesh);
     for (int v : change.movedVertices) {
       const Triangle& t = mesh.tris[findTriangleAt(mesh, v)];
       const Vec2 rest = t.rest[cornerOf(t, v)];
