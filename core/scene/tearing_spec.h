@@ -10,14 +10,19 @@ struct TearingSpec {
                                  // incident triangle (its edges and bisector: the grid's directions)
   int denseDirections = 180;     // dense: samples per half turn (per fan for a border vertex)
   bool skipByBound = true;       // skip vertices whose separation-strength bound cannot reach the table
-  // Crack growth within a step (tear_stage.h). true: after each tear the stress around the new
-  // crack ends is relaxed and the cloth tears on while omega > 1, each crack tip advancing at most
-  // crackSpeed * dt per step; false (default): the thesis' one pass per step (maxTearsPerStep
-  // lines), the next step's dynamics relaxing the stress. The README says why false is the default.
+  // Crack growth within a step (tear_stage.h). true: a crack that tears runs on from its new tips
+  // within the step, each tip advancing at most crackSpeed * dt per step, so a crack's growth per
+  // second does not depend on the element size, and tips read the material ahead of them
+  // (crackTipLength); false (default): the thesis' one pass per step (maxTearsPerStep lines), the
+  // next step's dynamics relaxing the stress. The README says why false is still the default.
   bool propagate = false;
-  double crackSpeed = 20.0;      // m/s (material space): with propagate, the fastest a crack tip runs
+  double crackSpeed = 50.0;      // m/s (material space): with propagate, the fastest a crack tip runs
   int relaxRings = 2;            // vertices within this many edges of a new crack end are relaxed
-  int relaxSweeps = 6;           // Jacobi sweeps of that relaxation
+  int relaxSweeps = 0;           // Gauss-Seidel sweeps of that relaxation (0: none)
+  // m (material space), with propagate: a crack tip tears by the traction averaged over this much material ahead
+  // of it (tearing/crack_tip_stress.h), and no new crack starts this close to a tip (the stress
+  // there is the tip's); 0: a tip reads its own fan, like any vertex.
+  double crackTipLength = 0.05;
   bool branchFromLips = false;   // a vertex on a crack's flank may start a new crack (shattering)
   int maxTearsPerStep = 1;       // per cloth per step: new cracks (with propagate) or lines (without);
                                  // the thesis tears one

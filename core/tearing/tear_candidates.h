@@ -27,6 +27,10 @@ struct TearSearchSettings {
   int denseDirections = 180;  // samples over a line's half turn (over the fan for a ray)
   bool skipByBound = true;    // skip vertices whose zeta bound is below the weakest strength
   bool branchFromLips = false;  // a vertex on a crack's flank may start a new crack (tear_search.h)
+  // > 0: a crack tip reads the traction averaged over this much material ahead of it (m), not its
+  // fan (crack_tip_stress.h); 0: its fan, like any other vertex.
+  double tipLength = 0.0;
+  int tipDirections = 72;     // rays sampled over a tip's open fan
   bool onlyTheBest = false;   // with skipByBound: return only the best vertex's line (one tear per
                               // step), skipping every vertex whose bound cannot beat the best so far
 };

@@ -1,9 +1,11 @@
 #include "tearing/tear_search.h"
 
 #include <algorithm>
+#include <limits>
 #include <span>
 #include <utility>
 
+#include "tearing/crack_tip_stress.h"
 #include "tearing/vertex_fan.h"
 
 namespace weft {
@@ -60,6 +62,7 @@ void TearSearch::start(const ClothMesh& mesh, const std::vector<TriangleCorners>
   best_.assign(n, TearCandidate{});
   evaluated_.assign(n, 0);
   excluded_.assign(n, 0);
+  place_.assign(n, CrackPlace::None);
   for (int v = 0; v < n; ++v) lookAt(mesh, corners, stress, v, counts);
 }
 
@@ -72,6 +75,7 @@ void TearSearch::refresh(const ClothMesh& mesh, const std::vector<TriangleCorner
   best_.resize(n);
   evaluated_.resize(n, 0);
   excluded_.resize(n, 0);
+  place_.resize(n, CrackPlace::None);
   walked_.resize(n, 1);
   std::vector<int> vertices(extraVertices);
   for (int t : triangles) {
@@ -116,7 +120,13 @@ void TearSearch::lookAt(const ClothMesh& mesh, const std::vector<TriangleCorners
   }
   ++counts.vertices;
   const CrackPlace place = fanOf(mesh, corners, stress, vertex, fan_);
+  place_[vertex] = place;
   if (place == CrackPlace::Lip && !settings_.branchFromLips) return;  // cracks grow at their tips
+  if (place == CrackPlace::Tip && settings_.tipLength > 0.0) {
+    // The tip reads the material ahead of it, not its fan: no bound from the fan (tips are few).
+    bound_[vertex] = std::numeric_limits<double>::infinity();
+    return;
+  }
   const double scale = place == CrackPlace::Tip ? table_->propagationFactor : 1.0;
   // The margin covers the rounding of the bound itself, so the skip never changes a result.
   bound_[vertex] = settings_.skipByBound
@@ -146,12 +156,16 @@ std::optional<TearCandidate> TearSearch::best(const ClothMesh& mesh, const std::
   });
   TearCandidate winner;
   for (const auto& [bound, v] : open) {
+    // Crack tips (read ahead of them, so unbounded: they come first) tear before any new crack
+    // starts: the stress around a tip is its own concentration, which its running relieves.
+    if (settings_.tipLength > 0.0 && winner.crackTip && winner.ratio > 1.0 &&
+        bound < std::numeric_limits<double>::infinity()) {
+      break;
+    }
     if (bound < winner.ratio) break;  // no vertex left can beat it (ties are still evaluated)
     if (!evaluated_[v]) {
       const CrackPlace place = fanOf(mesh, corners, stress, v, fan_);
-      best_[v] = candidateAt(mesh, v, fan_, place,
-                             bestLineAt(fan_, *table_, weftAngleRad_, settings_,
-                                        place == CrackPlace::Tip ? table_->propagationFactor : 1.0, counts));
+      best_[v] = candidateAt(mesh, v, fan_, place, bestLineOf(mesh, stress, v, place, counts));
       evaluated_[v] = 1;
     }
     const TearCandidate& line = best_[v];
@@ -161,11 +175,45 @@ std::optional<TearCandidate> TearSearch::best(const ClothMesh& mesh, const std::
   return winner;
 }
 
+TearCandidate TearSearch::bestLineOf(const ClothMesh& mesh, const std::vector<Mat2>& stress, int vertex,
+                                     CrackPlace place, TearSearchCounts& counts) {
+  if (place != CrackPlace::Tip) return bestLineAt(fan_, *table_, weftAngleRad_, settings_, 1.0, counts);
+  if (!(settings_.tipLength > 0.0)) {
+    return bestLineAt(fan_, *table_, weftAngleRad_, settings_, table_->propagationFactor, counts);
+  }
+  counts.linesEvaluated += settings_.tipDirections;
+  return bestTipLine(mesh, walkFan(mesh, vertex, triangleAt_[vertex]), stress, *table_, weftAngleRad_,
+                     table_->propagationFactor, settings_.tipLength, settings_.tipDirections);
+}
+
+TearCandidate TearSearch::tipLineAt(const ClothMesh& mesh, const std::vector<TriangleCorners>& corners,
+                                    const std::vector<Mat2>& stress, int vertex, TearSearchCounts& counts) {
+  if (vertex < 0 || vertex >= static_cast<int>(excluded_.size()) || excluded_[vertex]) return TearCandidate{};
+  if (!holds(mesh, triangleAt_[vertex], vertex)) triangleAt_[vertex] = findTriangleAt(mesh, vertex);
+  if (triangleAt_[vertex] == kNone) return TearCandidate{};
+  const CrackPlace place = fanOf(mesh, corners, stress, vertex, fan_);
+  if (place != CrackPlace::Tip) return TearCandidate{};
+  return candidateAt(mesh, vertex, fan_, place, bestLineOf(mesh, stress, vertex, place, counts));
+}
+
+bool TearSearch::nearCrack(const ClothMesh& mesh, const Vec2& restPosition, double radius) const {
+  for (int v = 0; v < static_cast<int>(place_.size()); ++v) {
+    if (place_[v] == CrackPlace::None || !holds(mesh, triangleAt_[v], v)) continue;
+    const Triangle& t = mesh.tris[triangleAt_[v]];
+    if ((t.rest[cornerOf(t, v)] - restPosition).norm() < radius) return true;
+  }
+  return false;
+}
+
 std::vector<TearCandidate> TearSearch::linesAt(const ClothMesh& mesh, const std::vector<TriangleCorners>& corners,
                                                const std::vector<Mat2>& stress, int vertex) {
   const CrackPlace place = fanOf(mesh, corners, stress, vertex, fan_);
   std::vector<TearCandidate> lines =
-      linesAboveOneAt(fan_, *table_, weftAngleRad_, settings_, place == CrackPlace::Tip ? table_->propagationFactor : 1.0);
+      place == CrackPlace::Tip && settings_.tipLength > 0.0
+          ? tipLinesAboveOne(mesh, walkFan(mesh, vertex, triangleAt_[vertex]), stress, *table_, weftAngleRad_,
+                             table_->propagationFactor, settings_.tipLength, settings_.tipDirections)
+          : linesAboveOneAt(fan_, *table_, weftAngleRad_, settings_,
+                            place == CrackPlace::Tip ? table_->propagationFactor : 1.0);
   for (TearCandidate& line : lines) line = candidateAt(mesh, vertex, fan_, place, line);
   return lines;
 }

@@ -44,6 +44,12 @@ class TearSearch {
   // Every line with omega > 1 at a vertex, best first (the fallbacks when the best is refused).
   std::vector<TearCandidate> linesAt(const ClothMesh& mesh, const std::vector<TriangleCorners>& corners,
                                      const std::vector<Mat2>& stress, int vertex);
+  // The best line at a crack tip, whatever its omega (vertex kNone when the vertex is not a tip).
+  TearCandidate tipLineAt(const ClothMesh& mesh, const std::vector<TriangleCorners>& corners,
+                          const std::vector<Mat2>& stress, int vertex, TearSearchCounts& counts);
+  // Whether a vertex of a crack (its tip or a lip) lies within `radius` (material space) of
+  // `restPosition`.
+  bool nearCrack(const ClothMesh& mesh, const Vec2& restPosition, double radius) const;
   // The vertex is not offered again this step (every line at it was refused, or its crack has
   // run as far as it may this step).
   void exclude(int vertex);
@@ -54,6 +60,8 @@ class TearSearch {
   CrackPlace fanOf(const ClothMesh& mesh, const std::vector<TriangleCorners>& corners, const std::vector<Mat2>& stress,
              int vertex, StressFan& fan) const;
   double strengthScaleAt(const ClothMesh& mesh, int vertex, const StressFan& fan) const;
+  TearCandidate bestLineOf(const ClothMesh& mesh, const std::vector<Mat2>& stress, int vertex, CrackPlace place,
+                           TearSearchCounts& counts);
   TearCandidate candidateAt(const ClothMesh& mesh, int vertex, const StressFan& fan, CrackPlace place,
                             TearCandidate line) const;
 
@@ -69,6 +77,7 @@ class TearSearch {
   std::vector<TearCandidate> best_;      // per vertex: its best line, valid when evaluated_
   std::vector<char> evaluated_;
   std::vector<char> excluded_;
+  std::vector<CrackPlace> place_;        // per vertex, as last looked at
   StressFan fan_;                        // reused
 };
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <deque>
 #include <limits>
 #include <numbers>
 #include <optional>
@@ -27,6 +28,14 @@ constexpr double kCopySeparation = 1e-6;
 // A bound on the work of one step: no cloth tears more often than this in one step, whatever the
 // crack speed (a 64 x 64 sheet torn apart along both diagonals takes about 250).
 constexpr int kMaxTearsPerStep = 4096;
+
+// With propagation, a crack that tore this step runs on from its new tips while they read at
+// least this fraction of the strength they need, until it has run crack_speed * dt. The stress a
+// new tip reads is the step's, from before the crack reached it: it lacks the concentration the
+// running crack brings with it (a tip concentrates the load it took off its lips), which the next
+// step's solve restores. Half the strength is the far field a crack runs on through, as a tip
+// concentrating the load at least twofold would see it.
+constexpr double kRunOnRatio = 0.5;
 
 // Moves each copy of a separated vertex (and its original) towards the middle of its own
 // triangles, so the lips of the tear no longer coincide. Velocities are not touched (momentum is
@@ -81,6 +90,7 @@ TearStage::TearStage(const Scene& scene) : spec_(scene.tearing) {
   searchSettings_.denseDirections = spec_.denseDirections;
   searchSettings_.skipByBound = spec_.skipByBound;
   searchSettings_.branchFromLips = spec_.branchFromLips;
+  searchSettings_.tipLength = spec_.propagate ? spec_.crackTipLength : 0.0;
   relaxation_.rings = spec_.relaxRings;
   relaxation_.sweeps = spec_.relaxSweeps;
   materialsChanged(scene);
@@ -130,11 +140,17 @@ TopologyChange TearStage::tearCloth(Cloth& cloth, int clothIndex, double time, d
   std::vector<Vec2> started;  // where this step's tears were, for the spacing of new cracks
   int tears = 0;
   int crackStarts = 0;
+  std::deque<int> running;  // tips of this step's cracks, in the order they were made
   for (int pass = 0; pass < 4 * kMaxTearsPerStep && tears < maxTears; ++pass) {
     std::optional<TearCandidate> best;
     {
       StageTimer timer(profile, "tear_search");
-      best = search_.best(cloth.mesh, corners, stress_, stats_.search);
+      while (!running.empty() && !best) {
+        const TearCandidate line = search_.tipLineAt(cloth.mesh, corners, stress_, running.front(), stats_.search);
+        running.pop_front();
+        if (line.vertex != kNone && line.ratio >= kRunOnRatio) best = line;
+      }
+      if (!best) best = search_.best(cloth.mesh, corners, stress_, stats_.search);
     }
     if (!best) break;
     const int vertex = best->vertex;
@@ -146,7 +162,13 @@ TopologyChange TearStage::tearCloth(Cloth& cloth, int clothIndex, double time, d
     // once along an evenly loaded border would all run, side by side.
     const bool continues = fronts.frontAt.contains(vertex);
     const bool starts = !continues && !best->crackTip;
-    if ((starts && spec_.propagate && crackStarts >= spec_.maxTearsPerStep) ||
+    // Within a crack tip's reach the stress is the tip's own (its concentration): the tip decides
+    // there, or every tip would grow a fringe of parallel cracks beside it. Beside a crack's lips
+    // the stress is the opening's: the row of triangles along a lip takes up the lip's sliding as
+    // shear, which read as a load would start cracks across the first one.
+    if ((starts && searchSettings_.tipLength > 0.0 &&
+         search_.nearCrack(cloth.mesh, best->restPosition, 2.0 * spec_.crackTipLength)) ||
+        (starts && spec_.propagate && crackStarts >= spec_.maxTearsPerStep) ||
         (!continues && std::any_of(started.begin(), started.end(), [&](const Vec2& p) {
           return (p - best->restPosition).norm() < spec_.minSpacing;
         }))) {
@@ -213,7 +235,10 @@ TopologyChange TearStage::tearCloth(Cloth& cloth, int clothIndex, double time, d
     double tornLength = 0.0;
     for (int e : change.tornEdges) tornLength += 0.5 * restLength(cloth.mesh, e);
     fronts.advanced[front] += tornLength / std::max<std::size_t>(1, change.crackEnds.size());
-    for (int end : change.crackEnds) fronts.frontAt[end] = front;
+    for (int end : change.crackEnds) {
+      fronts.frontAt[end] = front;
+      if (spec_.propagate) running.push_back(end);
+    }
     surgeryTimer.reset();
 
     // 3. The stress after the tear: the changed triangles at the current positions, then (with
@@ -222,7 +247,7 @@ TopologyChange TearStage::tearCloth(Cloth& cloth, int clothIndex, double time, d
     {
       StageTimer timer(profile, "tear_relax");
       tensileStresses(cloth, change.changedTriangles, stress_);
-      if (spec_.propagate) {
+      if (spec_.propagate && spec_.relaxSweeps > 0) {
         std::vector<int> ends = change.crackEnds;
         ends.push_back(vertex);
         const std::vector<int> patch = relaxAroundCrack(cloth, ends, relaxation_, stress_);
