@@ -214,7 +214,9 @@ void checkPinsAgainstMesh(const ClothSpec& cloth, const ClothMesh& mesh, const O
       }
     }
     if (pins.restBox) {
-      const auto& [lo, hi] = *pins.restBox;
+      // Named references, not a structured binding: clang before 16 cannot capture one in a lambda.
+      const Vec2& lo = pins.restBox->first;
+      const Vec2& hi = pins.restBox->second;
       const double slack = 1e-9;  // a box edge drawn exactly on a row of vertices still catches it
       const bool any = std::any_of(rest.begin(), rest.end(), [&](const std::vector<Vec2>& corners) {
         return std::any_of(corners.begin(), corners.end(), [&](const Vec2& p) {
