@@ -52,6 +52,10 @@ make_seeds() {
 # readers are linear in the input) and only slow the campaign down.
 declare -A max_len=([json_text]=4096 [scene]=4096 [material_preset]=4096 [tear_table]=4096 [obj_cloth]=8192
                     [sharp_tags]=4096)
+# A unit slower than this many seconds (wall clock) is a finding: a hang. The slowest legitimate
+# input is a scene pinning a 1024 x 1024 grid (built to check the pins): 4 s of CPU under the
+# sanitizers, half a minute of wall time on a loaded machine.
+timeout=300
 # No allocation stacks in reports: a quarter faster. Rerunning a finding's input
 # (build-fuzz/fuzz/fuzz_TARGET build-fuzz/crash-...) prints them.
 export ASAN_OPTIONS="${ASAN_OPTIONS:-malloc_context_size=0}"
@@ -64,7 +68,7 @@ for target in "${targets[@]}"; do
   log="build-fuzz/fuzz_$target.log"
   status=0
   start=$(date +%s)
-  (cd build-fuzz && exec "./fuzz/fuzz_$target" "${limit[@]}" -max_len="${max_len[$target]}" -timeout=60 \
+  (cd build-fuzz && exec "./fuzz/fuzz_$target" "${limit[@]}" -max_len="${max_len[$target]}" -timeout="$timeout" \
      -print_final_stats=1 "corpus/$target" "seeds/$target") > "$log" 2>&1 &
   pid=$!
   wait "$pid" || status=$?
