@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <string_view>
 
+#include "util/echo.h"
 #include "util/input_error.h"
 #include "util/json_fields.h"
 #include "util/json_text.h"
@@ -16,8 +17,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   for (const bool comments : {false, true}) {
     try {
       const nlohmann::json value = weft::parseJsonText(text, "fuzz.json", weft::JsonTextOptions{.allowComments = comments});
-      // What messages do with a value they echo: bounded whatever it holds.
-      if (weft::got(value).size() > 400) std::abort();
+      // What messages do with a value they echo: bounded whatever it holds. echo() shows at most
+      // kEchoLimit characters, each at most 6 bytes ("\u007F"), then "…"; got() adds the type.
+      if (weft::got(value).size() > 6 * weft::kEchoLimit + 40) std::abort();
     } catch (const weft::InputError& e) {
       if (std::string_view(e.what()).size() > 2000) std::abort();
     }

@@ -1,23 +1,18 @@
 // libFuzzer target: the OBJ cloth loader (mesh/obj_import.h) on arbitrary bytes, written to a
 // file as a scene's mesh would be. Any input must give a valid cloth mesh or an InputError.
-#include <unistd.h>
-
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
-#include <fstream>
 #include <string>
 
+#include "fuzz_file.h"
 #include "mesh/mesh_check.h"
 #include "mesh/obj_import.h"
 #include "util/input_error.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  static const std::string path = "/tmp/weft_obj_cloth_fuzz_" + std::to_string(getpid()) + ".obj";
-  std::ofstream(path, std::ios::binary | std::ios::trunc).write(reinterpret_cast<const char*>(data),
-                                                                  static_cast<std::streamsize>(size));
   weft::ObjSpec spec;
-  spec.path = path;
+  spec.path = weft::fuzz::writeInput(data, size, "cloth.obj");
   try {
     weft::ObjVertexMap map;
     const weft::ClothMesh mesh = weft::loadObjMesh(spec, "fuzz.json", &map);

@@ -118,11 +118,11 @@ ClothMesh loadObjMesh(const ObjSpec& spec, const std::string& referencingFile, O
   config.triangulate = false;  // fan-triangulated below, so face numbers in messages match the file
   config.vertex_color = false;
   tinyobj::ObjReader reader;
-  if (!reader.ParseFromString(text, "", config)) source.fail("", "cannot parse OBJ: " + reader.Error());
+  if (!reader.ParseFromString(text, "", config)) source.fail("", "cannot parse OBJ: " + tinyobjMessage(reader.Error()));
   // tinyobjloader only warns about faces it drops or indices it cannot resolve.
   const std::string& warning = reader.Warning();
   if (warning.find("Degenerated face") != std::string::npos) source.fail("", "a face has fewer than 3 corners");
-  if (warning.find("out of bounds") != std::string::npos) source.fail("", "an index is out of range: " + warning);
+  if (warning.find("out of bounds") != std::string::npos) source.fail("", "an index is out of range: " + tinyobjMessage(warning, "out of bounds"));
 
   const tinyobj::attrib_t& attrib = reader.GetAttrib();
   if (attrib.texcoords.empty()) {

@@ -42,13 +42,13 @@ TriangleMesh loadClosedObj(const std::filesystem::path& path) {
   config.triangulate = false;  // fanned below, so face numbers in messages match the file's `f` lines
   config.vertex_color = false;
   tinyobj::ObjReader reader;
-  if (!reader.ParseFromString(text, "", config)) throw InputError(file, "", "cannot parse OBJ: " + reader.Error());
+  if (!reader.ParseFromString(text, "", config)) throw InputError(file, "", "cannot parse OBJ: " + tinyobjMessage(reader.Error()));
   // tinyobjloader only warns about faces it drops or indices it cannot resolve.
   const std::string& warning = reader.Warning();
   if (warning.find("Degenerated face") != std::string::npos)
     throw InputError(file, "", "a face has fewer than 3 corners");
   if (warning.find("out of bounds") != std::string::npos)
-    throw InputError(file, "", "an index is out of range: " + warning);
+    throw InputError(file, "", "an index is out of range: " + tinyobjMessage(warning, "out of bounds"));
 
   const tinyobj::attrib_t& attrib = reader.GetAttrib();
   TriangleMesh mesh;

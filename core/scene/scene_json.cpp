@@ -181,12 +181,6 @@ PinGroup parsePinGroup(const json& j, const std::string& pointer, const SceneRea
 // that misses the cloth is reported at load time instead of silently pinning nothing.
 void checkPinsAgainstMesh(const ClothSpec& cloth, const ClothMesh& mesh, const ObjVertexMap& objVertices,
                           const std::string& pointer, const SceneReadContext& ctx) {
-  std::vector<std::vector<Vec2>> rest(static_cast<std::size_t>(mesh.vertexCount()));
-  for (const auto& t : mesh.tris) {
-    for (int k = 0; k < 3; ++k) {
-      if (t.v[k] >= 0 && t.v[k] < mesh.vertexCount()) rest[static_cast<std::size_t>(t.v[k])].push_back(t.rest[k]);
-    }
-  }
   for (std::size_t g = 0; g < cloth.pins.size(); ++g) {
     const PinGroup& pins = cloth.pins[g];
     const std::string at = childPointer(childPointer(pointer, "pins"), g);
@@ -214,10 +208,14 @@ void checkPinsAgainstMesh(const ClothSpec& cloth, const ClothMesh& mesh, const O
       }
     }
     if (pins.restBox) {
-      const auto& [lo, hi] = *pins.restBox;
+      // Named references, not a structured binding: clang before 16 cannot capture one in a lambda.
+      const Vec2& lo = pins.restBox->first;
+      const Vec2& hi = pins.restBox->second;
       const double slack = 1e-9;  // a box edge drawn exactly on a row of vertices still catches it
-      const bool any = std::any_of(rest.begin(), rest.end(), [&](const std::vector<Vec2>& corners) {
-        return std::any_of(corners.begin(), corners.end(), [&](const Vec2& p) {
+      // A vertex's rest coordinates are its triangles' corners; scanned in place (a list per vertex
+      // cost a million small allocations on a 1024 x 1024 grid).
+      const bool any = std::any_of(mesh.tris.begin(), mesh.tris.end(), [&](const auto& t) {
+        return std::any_of(t.rest.begin(), t.rest.end(), [&](const Vec2& p) {
           return p.x() >= lo.x() - slack && p.x() <= hi.x() + slack && p.y() >= lo.y() - slack &&
                  p.y() <= hi.y() + slack;
         });
@@ -286,6 +284,8 @@ ClothSpec parseCloth(const json& j, const std::string& pointer, std::size_t inde
     }
   }
   if (r.has("appearance")) cloth.appearance = parseAppearance(r.at("appearance"), r.pointer("appearance"), ctx);
+  // A grid is valid by construction: its mesh is built here only to check pins against it.
+  if (cloth.grid && cloth.pins.empty()) return cloth;
   ObjVertexMap objVertices;
   const ClothMesh mesh = buildMeshForChecks(cloth, pointer, ctx, objVertices);
   checkPinsAgainstMesh(cloth, mesh, objVertices, pointer, ctx);

@@ -73,6 +73,13 @@ std::optional<ObjTextProblem> findBadCoordinate(const std::string& text, std::in
   return std::nullopt;
 }
 
+std::string tinyobjMessage(const std::string& messages, std::string_view phrase) {
+  const std::size_t at = phrase.empty() ? std::string::npos : messages.find(phrase);
+  const std::size_t begin = at == std::string::npos ? 0 : messages.rfind('\n', at) + 1;  // npos + 1 == 0
+  const std::size_t end = messages.find('\n', begin);
+  return echo(std::string_view(messages).substr(begin, end == std::string::npos ? std::string::npos : end - begin), 200);
+}
+
 std::string withoutByteOrderMark(std::string text) {
   if (text.rfind("\xEF\xBB\xBF", 0) == 0) text.erase(0, 3);
   return text;

@@ -23,6 +23,12 @@ struct ObjTextProblem {
 // an int.
 std::optional<ObjTextProblem> findBadCoordinate(const std::string& text, std::initializer_list<std::string_view> keywords);
 
+// The line of tinyobjloader's `messages` (its Warning() or Error(), one message per line) that
+// holds `phrase` (or else the first line), echoed short (util/echo.h). Its messages quote the
+// file, e.g. a `usemtl` name of any length and bytes, and it lists one per unknown material
+// before the one that matters: whole, they once made a 2.6 KB error message.
+std::string tinyobjMessage(const std::string& messages, std::string_view phrase = {});
+
 // `text` without a leading UTF-8 byte order mark, which some Windows tools write.
 std::string withoutByteOrderMark(std::string text);
 

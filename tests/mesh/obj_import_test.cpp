@@ -258,6 +258,19 @@ TEST(ObjImport, RefusesAVertexWithTwoCoordinates) {
                  "at least 2 numbers, got 1");
 }
 
+TEST(ObjImport, ShortensWhatTinyobjloaderQuotesFromTheFile) {
+  // Found by fuzz_obj_cloth: tinyobjloader warns once per unknown `usemtl` name, quoting it, before
+  // the warning that matters; all of it went into the message (2.6 KB for a 2.4 KB name).
+  const fs::path path = writeObj("v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nusemtl " +
+                                 std::string(3000, '\xC0') + "\nf 1/1/5 2/2/5 3/3/5\n");
+  expectRejected(path, "", "Vertex normal indices out of bounds (line 8.)");
+  try {
+    load(path);
+  } catch (const InputError& e) {
+    EXPECT_LT(std::string(e.what()).size(), 400u) << e.what();
+  }
+}
+
 TEST(ObjImport, ReadsAFileThatStartsWithAByteOrderMark) {
   // The mark used to hide the first `v` keyword: one vertex fewer, then "index out of range".
   const ClothMesh mesh = load(writeObj("\xEF\xBB\xBFv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nf 1/1 2/2 3/3\n"));
