@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <random>
+#include <regex>
 #include <sstream>
 #include <string>
 #include <thread>
@@ -193,6 +194,33 @@ TEST_F(EditorWindow, KeyTapsShorterThanAFrameAreNotLost) {
       saved = j["cloths"][0]["tear_table"]["strength"][2].get<double>();
   }
   EXPECT_EQ(saved, 20.0) << readText(root_ / "taps.txt");
+}
+
+// A scene whose step takes far longer than a frame, playing: the window still draws at its own
+// rate (the steps run on the worker thread), so it shows many frames per step. Stepping on the
+// UI thread, every frame waited for at least one step.
+TEST_F(EditorWindow, TheWindowDrawsAtItsOwnRateWhileAStepTakesLongerThanAFrame) {
+  std::ifstream in(fs::path(WEFT_SOURCE_DIR) / "presets" / "scenes" / "hanging-sheet.json");
+  json scene = json::parse(in);
+  scene["cloths"][0]["mesh"]["grid"]["resolution"] = json::array({20, 20});
+  scene["solver"]["substeps"] = 300;  // a step of 0.2 s and more
+  const fs::path file = root_ / "scenes" / "heavy.json";
+  std::ofstream(file) << scene.dump(2);
+
+  startWeft("edit '" + file.string() + "' --play --frames 40", root_ / "heavy.txt");
+  std::string out;
+  for (int i = 0; i < 600 && out.find(" frames in ") == std::string::npos; ++i) {
+    std::this_thread::sleep_for(100ms);
+    out = readText(root_ / "heavy.txt");
+  }
+  std::smatch summary;
+  ASSERT_TRUE(std::regex_search(out, summary, std::regex(R"(weft edit: (\d+) frames in .*, the scene at step (\d+))")))
+      << out;
+  const int frames = std::stoi(summary[1]);
+  const long long steps = std::stoll(summary[2]);
+  EXPECT_EQ(frames, 40) << out;
+  EXPECT_GT(steps, 0) << "it played: " << out;
+  EXPECT_GT(frames, 2 * steps) << "frames waited for steps: " << out;
 }
 
 }  // namespace

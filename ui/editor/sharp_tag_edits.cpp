@@ -182,7 +182,7 @@ std::filesystem::path ToolTagEditor::saveBesideScene(EditorSession& session) {
 bool ToolTagEditor::savesIntoInstalledData() const { return isInstalledData(document_.file()); }
 
 void ToolTagEditor::applyToWorld(EditorSession& session) const {
-  session.world().setObstacleSharpTags(obstacle_, tags());
+  session.applyToWorld([obstacle = obstacle_, tags = tags()](World& world) { world.setObstacleSharpTags(obstacle, tags); });
 }
 
 }  // namespace weft::editor

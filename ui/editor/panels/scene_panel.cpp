@@ -79,7 +79,8 @@ void drawObjects(EditorSession& session, PanelState& state) {
     if (ImGui::Selectable(scene.obstacles[static_cast<std::size_t>(i)].name.c_str(), state.obstacle == i)) state.obstacle = i;
   }
   // New obstacles appear beside the first cloth's first vertex, where they can be seen.
-  const Vec3 at = session.world().cloth(0).x.empty() ? Vec3::Zero() : session.world().cloth(0).x.front();
+  const std::shared_ptr<const WorldSnapshot> shown = session.view();
+  const Vec3 at = shown->cloths.empty() || shown->cloths[0].x.empty() ? Vec3::Zero() : shown->cloths[0].x.front();
   if (ImGui::SmallButton("Add sphere")) {
     tryEdit(session, [&] { return withObstacleAdded(session.json(), "sphere", at + Vec3(0.3, -0.3, 0.3), 0.1); },
             "add sphere");
@@ -182,7 +183,7 @@ void drawScenePanel(EditorSession& session, PanelState& state) {
     }
   }
   ImGui::TextDisabled("runs now:");
-  for (const std::string& name : session.world().stagesRun()) {
+  for (const std::string& name : session.view()->stagesRun) {
     ImGui::SameLine();
     ImGui::TextDisabled("%s", name.c_str());
   }
