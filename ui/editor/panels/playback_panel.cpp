@@ -28,12 +28,12 @@ void drawTimeline(EditorSession& session, PanelState& state) {
   ImGui::TextDisabled("cache: %zu frames, %.1f of %.0f MB", frames.frameCount(), frames.bytes() / kMiB,
                       frames.budgetBytes() / kMiB);
   if (const std::optional<long long> shown = session.shownFrame()) {
+    if (ImGui::SmallButton("Live")) session.showLive();
+    recordWidget(state, "play/live");
+    ImGui::SameLine();
     ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.1f, 0.35f, 0.75f, 1.0f));
     ImGui::TextWrapped("cached frame %lld of %lld: an edit continues from here", *shown, live);
     ImGui::PopStyleColor();
-    ImGui::SameLine();
-    if (ImGui::SmallButton("Live")) session.showLive();
-    recordWidget(state, "play/live");
   }
 }
 

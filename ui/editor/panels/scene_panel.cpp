@@ -9,6 +9,7 @@
 
 #include "editor/scene_edits.h"
 #include "panels.h"
+#include "preset_names.h"
 
 namespace weft::editor {
 
@@ -148,6 +149,16 @@ void drawScenePanel(EditorSession& session, PanelState& state) {
   if (ImGui::BeginCombo("open", session.document().file().filename().string().c_str())) {
     for (const auto& file : scenesBeside(session.document().file())) {
       if (ImGui::Selectable(file.filename().string().c_str(), file == session.document().file())) state.openRequest = file;
+      if (ImGui::IsItemHovered()) {  // what the scene shows, before opening it
+        const std::string description = sceneDescription(file);
+        if (!description.empty()) {
+          ImGui::BeginTooltip();
+          ImGui::PushTextWrapPos(420.0f);
+          ImGui::TextUnformatted(description.c_str());
+          ImGui::PopTextWrapPos();
+          ImGui::EndTooltip();
+        }
+      }
     }
     ImGui::EndCombo();
   }
