@@ -124,6 +124,23 @@ TEST(Timeline, AnEditOnAnEarlierFrameDropsTheFramesAfterItAndContinuesFromIt) {
   EXPECT_NE(positionsHash(*session.view()), fourHash) << "frame 4 again, simulated with the edit";
 }
 
+// A reset while the world is being rebuilt at an earlier frame abandons the rebuild: the session
+// is at t = 0 with only frame 0 cached, and nothing from the rebuild arrives later.
+TEST(Timeline, AResetDuringARewindAbandonsIt) {
+  test::TempDir dir;
+  EditorSession session(tearingSheet(dir));
+  playFrames(session, 6);
+  session.showFrame(5);
+  ASSERT_TRUE(session.edit(withWeftAngle(session.json(), 0, 30.0), "weft angle").accepted);  // rewinds to 5
+  session.reset();
+  EXPECT_EQ(session.world().stepCount(), 0);
+  session.advanceFrame(0.0);
+  EXPECT_FALSE(session.shownFrame());
+  EXPECT_EQ(session.frames().frameCount(), 1u);
+  EXPECT_EQ(session.view()->stepCount, 0);
+  EXPECT_DOUBLE_EQ(session.world().scene().cloths[0].weftAngleDeg, 30.0) << "the reset applies the document";
+}
+
 // The same pixels: frame 3 drawn when it was live and drawn again from the cache after
 // scrubbing back from frame 7.
 TEST(Timeline, ACachedFrameDrawsTheSamePixelsAsWhenItWasSimulated) {

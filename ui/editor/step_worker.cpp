@@ -17,6 +17,7 @@ StepWorker::StepWorker(std::unique_ptr<World> world, Scene builtFrom)
       thread_([this] { run(); }) {}
 
 StepWorker::~StepWorker() {
+  abandonRewind_ = true;
   {
     std::lock_guard lock(mutex_);
     quit_ = true;
@@ -26,6 +27,7 @@ StepWorker::~StepWorker() {
 }
 
 void StepWorker::attach(std::unique_ptr<World> world, Scene builtFrom) {
+  abandonRewind_ = true;
   std::unique_lock lock(mutex_);
   owed_ = 0;  // steps of the old world are not wanted: only the one running is waited for
   held_ = false;
@@ -41,6 +43,7 @@ void StepWorker::attach(std::unique_ptr<World> world, Scene builtFrom) {
   snapshotStale_ = false;
   health_.emplace(*world_, frameSteps_);
   rebaseHealth_ = false;
+  abandonRewind_ = false;
 }
 
 void StepWorker::rewindTo(long long step) {
@@ -205,8 +208,16 @@ void StepWorker::rewind(std::unique_lock<std::mutex>& lock) {
   std::size_t next = 0;
   for (;;) {
     for (; next < log.size() && log[next].first == world->stepCount(); ++next) log[next].second(*world);
-    if (world->stepCount() >= target) break;
+    if (world->stepCount() >= target || abandonRewind_) break;
     world->step();
+  }
+  if (abandonRewind_) {  // a reset or the end of the session: the old world stays until replaced
+    lock.lock();
+    changeLog_ = std::move(log);
+    rewindTo_.reset();
+    running_ = false;
+    idle_.notify_all();
+    return;
   }
   log.resize(next);  // what landed later is gone with the frames after this one
   std::shared_ptr<const WorldSnapshot> snapshot = snapshotOf(*world);

@@ -20,6 +20,7 @@
 //
 // Determinism: the worker runs World::step exactly as `weft run` does, one after another; only
 // when an edit lands (between which two steps) depends on timing, as it does for any user.
+#include <atomic>
 #include <condition_variable>
 #include <cstddef>
 #include <functional>
@@ -50,13 +51,14 @@ class StepWorker {
  public:
   // Starts the thread, idle, on `world`, built from `builtFrom` (kept for rewinds).
   StepWorker(std::unique_ptr<World> world, Scene builtFrom);
-  // Drops the owed steps after the one running, and joins the thread.
+  // Drops the owed steps after the one running (and a rewind in progress), and joins the thread.
   ~StepWorker();
   StepWorker(const StepWorker&) = delete;
   StepWorker& operator=(const StepWorker&) = delete;
 
   // Replaces the world (a reset built a new one): waits for the step in flight, drops the owed
-  // steps, the queued edits (they were for the old world) and the uncollected result.
+  // steps, a rewind in progress, the queued edits (they were for the old world) and the
+  // uncollected result.
   void attach(std::unique_ptr<World> world, Scene builtFrom);
 
   // Rebuilds the world as it was after `step` (see above) on the worker and returns at once;
@@ -115,6 +117,9 @@ class StepWorker {
   bool running_ = false;  // a step is running (unlocked) on the worker
   bool held_ = false;     // worldBetweenSteps: no step starts until release()  // the UI thread changed the world since the snapshot was taken
   bool quit_ = false;
+  // A reset or the end of the session abandons a rewind in progress (it may be re-simulating
+  // many frames) instead of waiting for it; read by the worker between the rewind's steps.
+  std::atomic<bool> abandonRewind_{false};
   std::thread thread_;  // last: started once everything above is ready
 };
 
