@@ -70,14 +70,15 @@ void drawPlaybackPanel(EditorSession& session, PanelState& state) {
   const std::shared_ptr<const WorldSnapshot> shown = session.view();
   ImGui::Text("t = %.3f s   step %lld%s", shown->time, shown->stepCount,
               session.stopped() ? "   STOPPED (non-finite)" : "");
-  drawTimeline(session, state);
   if (const auto& unhealthy = session.unhealthy()) {
-    // The warning `weft run` prints for the same steps (sim/health_check.h), until a reset.
+    // The warning `weft run` prints for the same steps (sim/health_check.h), until a reset;
+    // above the timeline, so it is in view without scrolling.
     ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.8f, 0.1f, 0.1f, 1.0f));
     ImGui::TextWrapped("warning: %s", healthWarning(*unhealthy).c_str());
     ImGui::PopStyleColor();
     recordWidget(state, "play/health");
   }
+  drawTimeline(session, state);
   if (state.recorder != nullptr) {
     ImGui::Separator();
     ImGui::SetNextItemWidth(90);
