@@ -26,7 +26,7 @@ namespace {
 namespace fs = std::filesystem;
 
 struct EditOptions {
-  std::string scene;                   // default: defaultScenePath()
+  std::string scene;                   // default: defaultEditorScenePath()
   std::vector<std::string> overrides;  // --set PATH=VALUE, kept for R (reload)
   std::optional<int> frames;           // window: displayed frames; headless: simulated frames
   fs::path screenshot;                 // the last frame as PNG
@@ -65,7 +65,7 @@ int runHeadlessInstead(const EditOptions& options, const fs::path& sceneFile, co
 }
 
 int edit(const EditOptions& options) {
-  const fs::path sceneFile = options.scene.empty() ? defaultScenePath() : fs::path(options.scene);
+  const fs::path sceneFile = options.scene.empty() ? defaultEditorScenePath() : fs::path(options.scene);
   // A bad scene is reported as such, before any window opens or any fallback runs.
   std::string sceneName;
   try {
@@ -106,7 +106,7 @@ Command addEditCommand(CLI::App& app) {
   auto parsed = std::make_shared<Parsed>();
   CLI::App* cli = app.add_subcommand(
       "edit", "Edit a scene and watch it simulate live (headless PNG frames when no window can open)");
-  cli->add_option("scene", parsed->options.scene, "Scene file (default: presets/scenes/hanging-sheet.json)");
+  cli->add_option("scene", parsed->options.scene, "Scene file (default: presets/scenes/ball-into-sheet-table4.1-cloth2.json, a ball tearing denim)");
   cli->add_option("--set", parsed->options.overrides,
                   "Override a scene value, e.g. --set solver.dt=0.005 (repeatable; an undoable, unsaved edit)")
       ->type_name("PATH=VALUE")

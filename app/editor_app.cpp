@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <iostream>
 #include <memory>
+#include <utility>
 
 #include "command.h"
 #include "editor/editor_session.h"
@@ -35,8 +36,8 @@ namespace {
 using Clock = std::chrono::steady_clock;
 constexpr auto kAutosaveEvery = std::chrono::seconds(5);
 
-ui::OrbitCamera startCamera(const World& world, const editor::ViewportRect& rect) {
-  return ui::defaultCamera(ui::renderViewOf(world), world.scene().output.camera, rect.aspect());
+ui::OrbitCamera startCamera(const editor::EditorSession& session, const editor::ViewportRect& rect) {
+  return ui::defaultCamera(session.view()->render, session.scene().output.camera, rect.aspect());
 }
 
 // ImGui for the window's lifetime: created after the window (its GLFW backend chains to the
@@ -76,6 +77,11 @@ ShortcutResult applyShortcuts(editor::EditorSession& session, const ui::WindowIn
   }
   if (io.WantCaptureKeyboard) return result;
   if (ImGui::IsKeyPressed(GLFW_KEY_F, false)) result.frameScene = true;
+  // The timeline: Left and Right step through the cached frames, End goes back to the live one.
+  const long long shownFrame = session.shownFrame().value_or(session.liveFrame());
+  if (ImGui::IsKeyPressed(GLFW_KEY_LEFT)) session.showFrame(std::max(shownFrame - 1, 0LL));
+  if (ImGui::IsKeyPressed(GLFW_KEY_RIGHT)) session.showFrame(shownFrame + 1);
+  if (ImGui::IsKeyPressed(GLFW_KEY_END, false)) session.showLive();
   if (io.KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_Z)) session.undo();
   if (io.KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_Y)) session.redo();
   if (io.KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_S)) {
@@ -179,7 +185,7 @@ int runEditor(const EditorOptions& options) {
     const ui::PixelSize size = window.framebufferSize();
     return editor::sceneViewport(size.width, size.height);
   };
-  ui::OrbitCamera camera = startCamera(workspace.session().world(), viewportRect());
+  ui::OrbitCamera camera = startCamera(workspace.session(), viewportRect());
   ui::OrbitControls controls;
   editor::ViewportInteraction interaction;
   editor::InputQueue inputQueue;
@@ -191,7 +197,9 @@ int runEditor(const EditorOptions& options) {
     window.bindDefaultFramebuffer();
     const ui::PixelSize size = window.framebufferSize();
     if (size.width > 0 && size.height > 0) {  // zero while minimized
-      ui::RenderView view = ui::renderViewOf(workspace.session().world());
+      // The latest step's snapshot: drawing never waits for the step the worker is running.
+      const std::shared_ptr<const editor::WorldSnapshot> shown = workspace.session().view();
+      ui::RenderView view = shown->render;
       // In tag mode, the feature a click would toggle, highlighted before the click.
       if (const auto& hovered = interaction.hovered(); hovered && ui.panels.tool &&
                                                       ui.panels.tool->obstacle() < static_cast<int>(view.obstacles.size())) {
@@ -210,6 +218,7 @@ int runEditor(const EditorOptions& options) {
   Clock::time_point lastAutosave = Clock::now();
   Clock::time_point lastFrame = Clock::now();
   int displayed = 0;
+  const Clock::time_point started = Clock::now();
   while (ui.quit != editor::QuitPrompt::Confirmed) {
     editor::EditorSession* session = &workspace.session();
     window.pollEvents();
@@ -225,7 +234,7 @@ int runEditor(const EditorOptions& options) {
     const ShortcutResult shortcut = applyShortcuts(*session, window.input());
     if (shortcut.quit) ui.quit = editor::QuitPrompt::Asking;
     if (shortcut.frameScene || ui.frameScene) {
-      camera = editor::frameSelection(ui::renderViewOf(session->world()), ui.panels.obstacle, camera, viewportRect().aspect());
+      camera = editor::frameSelection(session->view()->render, ui.panels.obstacle, camera, viewportRect().aspect());
     }
     ui.frameScene = false;
     viewportMouse(*session, ui, camera, controls, interaction, window, inputQueue, viewportRect());
@@ -235,7 +244,7 @@ int runEditor(const EditorOptions& options) {
     if (workspace.applyChoices(ui)) {
       session = &workspace.session();
       session->paused = true;  // every scene opens paused at t = 0
-      camera = startCamera(session->world(), viewportRect());
+      camera = startCamera(*session, viewportRect());
       window.setTitle("Weft: " + session->scene().name);
     }
     workspace.forgetAutosaveWhenClean();
@@ -245,8 +254,12 @@ int runEditor(const EditorOptions& options) {
     lastFrame = now;
     if (displayed > 0) {
       const bool wasStopped = session->stopped();
+      const bool wasUnhealthy = session->unhealthy().has_value();
       session->advanceFrame(frameSeconds);
       if (session->stopped() && !wasStopped) std::cerr << "weft edit: " << session->status << "\n";
+      if (session->unhealthy() && !wasUnhealthy) {
+        std::cerr << "weft edit: warning: " << healthWarning(*session->unhealthy()) << "\n";
+      }
     }
 
     drawFrame();
@@ -262,6 +275,11 @@ int runEditor(const EditorOptions& options) {
     }
     if (options.frames && displayed >= *options.frames) break;
   }
+  // For scripts and the window tests: the display kept its rate while the worker stepped.
+  const double seconds = std::chrono::duration<double>(Clock::now() - started).count();
+  std::printf("weft edit: %d frames in %.2f s (%.1f fps), the scene at step %lld\n", displayed, seconds,
+              seconds > 0 ? displayed / seconds : 0.0, workspace.session().view()->stepCount);
+  std::fflush(stdout);
   // Quitting on purpose, saved or discarded: the autosave this session wrote has done its job.
   // (Stopped by --frames, a script's run, the autosave is left as the last timed write made it.)
   if (ui.quit == editor::QuitPrompt::Confirmed) workspace.quitConfirmed();
@@ -275,6 +293,7 @@ int runEditor(const EditorOptions& options) {
   editor::EditorSession* session = &workspace.session();
 
   if (!options.screenshot.empty()) {
+    (void)std::as_const(*session).world();  // the steps asked for are in the picture, whatever the timing
     drawFrame();  // the back buffer is undefined after a swap: draw the last frame again
     const ui::PixelSize size = window.framebufferSize();
     try {

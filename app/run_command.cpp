@@ -183,8 +183,7 @@ int runScene(const RunOptions& options) {
     warned = true;
     const HealthFailure& failure = *health.failure();
     progress.finish();
-    std::cerr << "weft: " << (options.keepGoing ? "warning: " : "") << "unhealthy run at step " << failure.step
-              << " (t = " << failure.time << " s), " << failure.stage << " stage: " << failure.message
+    std::cerr << "weft: " << (options.keepGoing ? "warning: " : "") << healthWarning(failure)
               << (options.keepGoing ? " (continuing: --keep-going)" : "") << "\n";
   };
   try {

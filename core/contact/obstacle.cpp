@@ -95,6 +95,10 @@ Obstacle buildObstacle(const ObstacleSpec& spec, const std::string& sceneFile, i
   } catch (const InputError& e) {
     throw InputError(sceneFile, shapePointer, e.what());
   }
+  // Tags written in the scene: their errors name the scene file and the field themselves.
+  if (!spec.shape.sharpTagsInline.is_null()) {
+    tags = readSharpTags(spec.shape.sharpTagsInline, sceneFile, shapePointer + "/mesh/sharp_tags", mesh);
+  }
 
   RigidState state;
   state.position = spec.translate;

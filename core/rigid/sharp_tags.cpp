@@ -102,7 +102,11 @@ SharpTags loadSharpTags(const std::filesystem::path& file, const TriangleMesh& m
   if (!std::filesystem::exists(file, ec)) return {};
   const std::string name = file.string();
   const json j = readJsonFile(file, "the sharp-tag file");
-  const FieldReader r(j, "", name, {kVerticesKey, kEdgesKey});
+  return readSharpTags(j, name, "", mesh);
+}
+
+SharpTags readSharpTags(const json& j, const std::string& file, const std::string& pointer, const TriangleMesh& mesh) {
+  const FieldReader r(j, pointer, file, {kVerticesKey, kEdgesKey});
   SharpTags tags;
   if (r.has(kVerticesKey)) tags.vertices = readVertices(r, static_cast<int>(mesh.vertices.size()));
   if (r.has(kEdgesKey)) tags.edges = readEdges(r, mesh);

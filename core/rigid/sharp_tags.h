@@ -4,10 +4,14 @@
 // tools/sword.sharp.json), naming vertices by their id in the loaded mesh, which is the order of
 // the OBJ's `v` lines starting at 0 (loadClosedObj keeps it):
 //   {"sharp_edges": [[a, b], ...], "sharp_vertices": [id, ...]}
-// Both keys are optional; a tool without a tag file has nothing sharp.
+// Both keys are optional; a tool without a tag file has nothing sharp. A scene may also hold the
+// same object inline, in the mesh shape's "sharp_tags" (scene/contact_json.cpp).
 #include <array>
 #include <filesystem>
+#include <string>
 #include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include "rigid/triangle_mesh.h"
 
@@ -29,6 +33,11 @@ std::filesystem::path sharpTagsPathFor(const std::filesystem::path& meshPath);
 // the mesh, or an entry given twice (an edge also as [b, a]) throws an InputError naming the file
 // and the JSON pointer of the offending value. Returns the canonical form.
 SharpTags loadSharpTags(const std::filesystem::path& file, const TriangleMesh& mesh);
+
+// Reads tags written inline (a scene's `"sharp_tags": {...}`): the same checks as loadSharpTags,
+// with errors naming `file` and JSON pointers under `pointer`.
+SharpTags readSharpTags(const nlohmann::json& tags, const std::string& file, const std::string& pointer,
+                        const TriangleMesh& mesh);
 
 // Writes the canonical form of `tags` as pretty, key-sorted JSON: to `file`.tmp first, then
 // renamed over `file`, so a reader never sees half a file. Throws std::runtime_error naming the

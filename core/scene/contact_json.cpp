@@ -49,7 +49,18 @@ ShapeSpec parseShape(const json& j, const std::string& pointer, const SceneReadC
     const std::string relative = r.stringValue(r.required("path", "the OBJ file's path (a string)"), r.pointer("path"));
     shape.meshPath = resolveAsset(relative, r, "path", ctx);
     shape.scale = r.number("scale", shape.scale, limits::kMeshScale, "scale");
-    if (r.has("sharp_tags")) {
+    if (r.has("sharp_tags") && r.at("sharp_tags").is_object()) {
+      // Inline: the keys are checked now, the ids against the mesh when it is built.
+      const FieldReader tags(r.at("sharp_tags"), r.pointer("sharp_tags"), ctx.file, {"sharp_vertices", "sharp_edges"});
+      if (tags.has("sharp_vertices")) (void)tags.array("sharp_vertices");
+      if (tags.has("sharp_edges")) (void)tags.array("sharp_edges");
+      shape.sharpTagsInline = r.at("sharp_tags");
+    } else if (r.has("sharp_tags")) {
+      if (!r.at("sharp_tags").is_string()) {
+        r.fail(r.pointer("sharp_tags"), "must be a sharp-tag file's path or the tags themselves "
+                                        "{\"sharp_edges\": [[a, b], ...], \"sharp_vertices\": [...]}, " +
+                                            r.got(r.at("sharp_tags")));
+      }
       const std::string tags = r.stringValue(r.at("sharp_tags"), r.pointer("sharp_tags"));
       shape.sharpTagsPath = resolveAsset(tags, r, "sharp_tags", ctx);
     } else {

@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "util/types.h"
 
 namespace weft {
@@ -22,6 +24,9 @@ struct ShapeSpec {
   int segments = 32;                    // capsule, cylinder: segments around body y
   std::filesystem::path meshPath;       // mesh: the OBJ file (resolved against the asset folders)
   std::filesystem::path sharpTagsPath;  // mesh: NAME.sharp.json beside the OBJ when it exists; empty: nothing sharp
+  // mesh: the tags written in the scene itself ("sharp_tags": {...}, the sharp-tag file's form),
+  // checked against the mesh when it is built; null: none (then sharpTagsPath, if any).
+  nlohmann::json sharpTagsInline;
   double scale = 1.0;                   // mesh: metres per OBJ unit
 
   friend bool operator==(const ShapeSpec&, const ShapeSpec&) = default;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <sstream>
 
 #include "contact/obstacle.h"
 #include "sim/world.h"
@@ -198,6 +199,13 @@ bool HealthCheck::checkNow(const World& world) {
     }
   }
   return true;
+}
+
+std::string healthWarning(const HealthFailure& failure) {
+  std::ostringstream line;
+  line << "unhealthy run at step " << failure.step << " (t = " << failure.time << " s), " << failure.stage
+       << " stage: " << failure.message;
+  return line.str();
 }
 
 }  // namespace weft

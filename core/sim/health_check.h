@@ -44,6 +44,10 @@ struct HealthFailure {
   std::string message;     // one line: what happened and what to change
 };
 
+// The one-line warning `weft run` prints and the editor shows: "unhealthy run at step 412
+// (t = 1.03 s), membrane stage: <message>".
+std::string healthWarning(const HealthFailure& failure);
+
 class HealthCheck {
  public:
   // Reads the starting energies and the scene's inputs from `world` as it is before the first step.

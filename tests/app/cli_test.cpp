@@ -528,12 +528,13 @@ TEST_F(WeftCli, EditInAWindowStopsOnANonFiniteStateWithoutCrashing) {
 }
 
 // With no usable display `weft edit` says why and runs headless, writing PNG frames.
-void expectHeadlessFallback(const Result& r, const fs::path& frames, int lastFrame) {
+void expectHeadlessFallback(const Result& r, const fs::path& frames, int lastFrame,
+                            const std::string& scene = "hanging-sheet") {
   ASSERT_EQ(r.exitCode, 0) << r.output;
   EXPECT_NE(r.output.find("weft edit: cannot open a window ("), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("); running headless instead"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("PNG image(s)"), std::string::npos) << r.output;
-  EXPECT_NE(r.output.find("out/hanging-sheet/frames"), std::string::npos) << "where the images are: " << r.output;
+  EXPECT_NE(r.output.find("out/" + scene + "/frames"), std::string::npos) << "where the images are: " << r.output;
   for (int frame = 0; frame <= lastFrame; ++frame) {
     char name[32];
     std::snprintf(name, sizeof name, "frame_%04d.png", frame);
@@ -559,16 +560,19 @@ TEST_F(WeftCli, EditWithAnUnreachableDisplayRunsHeadless) {
 }
 
 TEST_F(WeftCli, NoArgumentsEditsTheDefaultScene) {
-  // The default scene comes from $WEFT_DATA_DIR when it has one: a 2-frame hanging sheet here.
-  json scene = readJson(kHangingSheet);
+  // The editor's default scene tears (a ball into denim, issue 21 item 8); it comes from
+  // $WEFT_DATA_DIR when that has one: a 2-frame, 8 x 8 copy here.
+  json scene = readJson(kPresetScenes / "ball-into-sheet-table4.1-cloth2.json");
+  ASSERT_TRUE(scene["cloths"][0].contains("tear_table")) << "the default scene can tear";
   scene["output"]["frames"] = 2;
   scene["cloths"][0]["mesh"]["grid"]["resolution"] = json::array({8, 8});
   const fs::path data = work() / "data";
   fs::create_directories(data / "presets" / "scenes");
-  std::ofstream(data / "presets" / "scenes" / "hanging-sheet.json") << scene.dump(2);
+  std::ofstream(data / "presets" / "scenes" / "ball-into-sheet-table4.1-cloth2.json") << scene.dump(2);
   const Result r = weft("", "env -u DISPLAY -u WAYLAND_DISPLAY WEFT_DATA_DIR=" + quoted(data));
   if (eglUnavailable(r)) GTEST_SKIP() << "headless OpenGL cannot start here: " << r.output;
-  expectHeadlessFallback(r, work() / "out" / "hanging-sheet" / "frames", 2);
+  const std::string name = scene["name"];
+  expectHeadlessFallback(r, work() / "out" / name / "frames", 2, name);
 }
 
 }  // namespace

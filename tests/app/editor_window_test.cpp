@@ -5,10 +5,13 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cstdint>
+#include <vector>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <random>
+#include <regex>
 #include <sstream>
 #include <string>
 #include <thread>
@@ -16,6 +19,7 @@
 #include <nlohmann/json.hpp>
 
 #include "editor/autosave.h"
+#include "editor/editor_viewport.h"
 #include "support/editor_panels_fixture.h"
 
 namespace {
@@ -42,6 +46,49 @@ std::string readText(const fs::path& file) {
 
 int run(const std::string& command) { return std::system(command.c_str()); }
 
+// The root window of an X display as RGB rows, from `xwd` (x11-apps): its ZPixmap dump of
+// Xvfb's 24-bit screen, 32 bits a pixel. Empty when xwd failed.
+struct Screen {
+  int width = 0, height = 0;
+  std::vector<std::uint8_t> rgb;
+  bool sameRegion(const Screen& o, int x0, int y0, int x1, int y1) const {
+    for (int y = y0; y < y1; ++y) {
+      for (int x = x0; x < x1; ++x) {
+        const std::size_t i = 3 * (static_cast<std::size_t>(y) * width + x);
+        if (rgb[i] != o.rgb[i] || rgb[i + 1] != o.rgb[i + 1] || rgb[i + 2] != o.rgb[i + 2]) return false;
+      }
+    }
+    return true;
+  }
+};
+
+Screen readXwd(const fs::path& file) {
+  const std::string data = readText(file);
+  Screen screen;
+  if (data.size() < 100) return screen;
+  const auto word = [&](std::size_t i) {
+    const auto* b = reinterpret_cast<const unsigned char*>(data.data()) + 4 * i;
+    return (std::uint32_t{b[0]} << 24) | (std::uint32_t{b[1]} << 16) | (std::uint32_t{b[2]} << 8) | b[3];
+  };
+  const std::uint32_t headerSize = word(0), width = word(4), height = word(5), byteOrder = word(7), bitsPerPixel = word(11),
+                      bytesPerLine = word(12), colours = word(19);
+  const std::size_t start = headerSize + 12u * colours;
+  if (bitsPerPixel != 32 || data.size() < start + std::size_t{bytesPerLine} * height) return screen;
+  screen.width = static_cast<int>(width);
+  screen.height = static_cast<int>(height);
+  screen.rgb.resize(3u * width * height);
+  for (std::uint32_t y = 0; y < height; ++y) {
+    for (std::uint32_t x = 0; x < width; ++x) {
+      const auto* p = reinterpret_cast<const unsigned char*>(data.data()) + start + std::size_t{y} * bytesPerLine + 4u * x;
+      const std::size_t o = 3u * (std::size_t{y} * width + x);
+      screen.rgb[o] = byteOrder == 0 ? p[2] : p[1];  // LSBFirst: B G R x
+      screen.rgb[o + 1] = byteOrder == 0 ? p[1] : p[2];
+      screen.rgb[o + 2] = byteOrder == 0 ? p[0] : p[3];
+    }
+  }
+  return screen;
+}
+
 // An Xvfb display of its own (1440x900, the editor's window size), stopped at the end.
 class VirtualDisplay {
  public:
@@ -57,6 +104,11 @@ class VirtualDisplay {
   ~VirtualDisplay() { run("kill " + readText(pidFile_) + " 2>/dev/null"); }
   bool ready() const { return ready_; }
   std::string env() const { return "DISPLAY=:" + std::to_string(number_) + " "; }
+  // The screen as it is now (xwd); empty when xwd is missing or failed.
+  Screen screenshot(const fs::path& file) const {
+    if (run(env() + "xwd -root -silent > '" + file.string() + "' 2>/dev/null") != 0) return {};
+    return readXwd(file);
+  }
   // xdotool on this display.
   int xdotool(const std::string& arguments) const { return run(env() + "xdotool " + arguments + " >/dev/null 2>&1"); }
 
@@ -193,6 +245,68 @@ TEST_F(EditorWindow, KeyTapsShorterThanAFrameAreNotLost) {
       saved = j["cloths"][0]["tear_table"]["strength"][2].get<double>();
   }
   EXPECT_EQ(saved, 20.0) << readText(root_ / "taps.txt");
+}
+
+// A scene whose step takes far longer than a frame, playing: the window still draws at its own
+// rate (the steps run on the worker thread), so it shows many frames per step. Stepping on the
+// UI thread, every frame waited for at least one step.
+TEST_F(EditorWindow, TheWindowDrawsAtItsOwnRateWhileAStepTakesLongerThanAFrame) {
+  std::ifstream in(fs::path(WEFT_SOURCE_DIR) / "presets" / "scenes" / "hanging-sheet.json");
+  json scene = json::parse(in);
+  scene["cloths"][0]["mesh"]["grid"]["resolution"] = json::array({20, 20});
+  scene["solver"]["substeps"] = 300;  // a step of 0.2 s and more
+  const fs::path file = root_ / "scenes" / "heavy.json";
+  std::ofstream(file) << scene.dump(2);
+
+  startWeft("edit '" + file.string() + "' --play --frames 40", root_ / "heavy.txt");
+  std::string out;
+  for (int i = 0; i < 600 && out.find(" frames in ") == std::string::npos; ++i) {
+    std::this_thread::sleep_for(100ms);
+    out = readText(root_ / "heavy.txt");
+  }
+  std::smatch summary;
+  ASSERT_TRUE(std::regex_search(out, summary, std::regex(R"(weft edit: (\d+) frames in .*, the scene at step (\d+))")))
+      << out;
+  const int frames = std::stoi(summary[1]);
+  const long long steps = std::stoll(summary[2]);
+  EXPECT_EQ(frames, 40) << out;
+  EXPECT_GT(steps, 0) << "it played: " << out;
+  EXPECT_GT(frames, 2 * steps) << "frames waited for steps: " << out;
+}
+
+// The timeline in the real window: N steps one frame at a time (one step a frame here), Left
+// goes back through the cached frames; the viewport then shows exactly the pixels it showed when
+// that frame was simulated, and not those of the frame the simulation is at.
+TEST_F(EditorWindow, ScrubbingBackShowsTheSamePixelsAsWhenTheFrameWasSimulated) {
+  if (!onPath("xwd")) GTEST_SKIP() << "needs xwd (x11-apps, scripts/install_deps.sh)";
+  std::ifstream in(fs::path(WEFT_SOURCE_DIR) / "presets" / "scenes" / "hanging-sheet.json");
+  json scene = json::parse(in);
+  scene["cloths"][0]["mesh"]["grid"]["resolution"] = json::array({8, 8});
+  scene["output"]["fps"] = 60;  // dt 1/60 s: a step is a frame
+  const fs::path file = root_ / "scenes" / "scrub.json";
+  std::ofstream(file) << scene.dump(2);
+
+  startWeft("edit '" + file.string() + "'", root_ / "scrub.txt");
+  ASSERT_TRUE(waitForWindow(30)) << readText(root_ / "scrub.txt");
+  display_->xdotool("search --name '^Weft' mousemove --window %1 700 450");  // over the scene, not a panel
+  const auto stepAndWait = [&](const std::string& key) {
+    display_->xdotool("key " + key);
+    std::this_thread::sleep_for(800ms);  // the step, and a few frames drawn
+  };
+  stepAndWait("n");
+  const Screen simulated = display_->screenshot(root_ / "frame1.xwd");
+  ASSERT_GT(simulated.width, 0) << "xwd gave no image";
+  stepAndWait("n");
+  stepAndWait("n");
+  const Screen later = display_->screenshot(root_ / "frame3.xwd");
+  stepAndWait("Left");
+  stepAndWait("Left");
+  const Screen scrubbed = display_->screenshot(root_ / "scrubbed.xwd");
+  ASSERT_EQ(scrubbed.width, simulated.width);
+  const weft::editor::ViewportRect scene3d = weft::editor::sceneViewport(simulated.width, simulated.height);
+  const int x0 = scene3d.x + 8, y0 = scene3d.y + 40, x1 = scene3d.x + scene3d.width - 8, y1 = scene3d.y + scene3d.height - 8;
+  EXPECT_FALSE(later.sameRegion(simulated, x0, y0, x1, y1)) << "the sheet fell between frames 1 and 3";
+  EXPECT_TRUE(scrubbed.sameRegion(simulated, x0, y0, x1, y1)) << "frame 1 scrubbed back to is not frame 1 as simulated";
 }
 
 }  // namespace

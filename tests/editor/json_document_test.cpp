@@ -74,6 +74,22 @@ TEST(JsonDocument, OpenRefusesCommentsThatSavingWouldDrop) {
   EXPECT_NE(what.find("comments"), std::string::npos) << what;
 }
 
+// As `weft run` does (issue 19): a key written twice is refused, not read as its last value, and
+// the message names the file and the key's place; so is nesting deeper than any of our formats.
+TEST(JsonDocument, OpenRefusesWhatTheHeadlessReaderRefuses) {
+  const TempDir dir;
+  const fs::path twice = dir.write("twice.json", "{\n  \"solver\": {\"dt\": 0.01, \"dt\": 0.02}\n}\n");
+  const std::string what = openError(twice);
+  EXPECT_NE(what.find("twice.json"), std::string::npos) << what;
+  EXPECT_NE(what.find("duplicate key \"dt\""), std::string::npos) << what;
+  EXPECT_NE(what.find("/solver"), std::string::npos) << what;
+
+  const fs::path deep = dir.write("deep.json", std::string(200, '[') + std::string(200, ']'));
+  const std::string tooDeep = openError(deep);
+  EXPECT_NE(tooDeep.find("deep.json"), std::string::npos) << tooDeep;
+  EXPECT_NE(tooDeep.find("deep"), std::string::npos) << tooDeep;
+}
+
 TEST(JsonDocument, SaveWritesPrettyJsonAndKeepsThePreviousFileAsBak) {
   const TempDir dir;
   const std::string original = R"({"density":0.2,"name":"cotton"})";

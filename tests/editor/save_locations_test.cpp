@@ -117,5 +117,50 @@ TEST_F(SaveLocationsTest, AShippedToolsTagsAreSavedBesideTheSceneUnlessTheUserSa
   EXPECT_NE(session_->world().obstacle(0).sharpVertex[vertex], wasSharp);
 }
 
+// The user prefers the tags in the scene itself: no file is written, neither beside the scene nor
+// into assets/; the scene's obstacle holds "sharp_tags": {...} and, saved and opened again, the
+// world reads the tags from it.
+TEST_F(SaveLocationsTest, AToolsTagsCanLiveInTheSceneItself) {
+  std::ifstream in(fs::path(WEFT_SOURCE_DIR) / "presets" / "scenes" / "sword-into-sheet.json");
+  json scene = json::parse(in);
+  scene["cloths"][0]["mesh"]["grid"]["resolution"] = json::array({8, 8});
+  const fs::path copied = dir_.write("copied/sword-copy.json", scene.dump(2));
+  session_ = std::make_unique<EditorSession>(copied);
+  const fs::path shipped = fs::path(WEFT_SOURCE_DIR) / "assets" / "tools" / "sword.sharp.json";
+  const std::string shippedBefore = readText(shipped);
+
+  ui_.panels.tool.emplace(*session_, 0);
+  ui_.panels.toolGeneration = session_->worldGeneration();
+  const int vertex = 0;
+  const bool wasSharp = session_->world().obstacle(0).sharpVertex[vertex];
+  ui_.panels.tool->toggleVertex(*session_, vertex);
+  imgui_->frame([&] {
+    ImGui::SetWindowPos("Tools", ImVec2(300, 300));
+    ImGui::SetWindowSize("Tools", ImVec2(400, 400));
+    ImGui::SetWindowFocus("Tools");
+    drawUi()();
+  });
+  imgui_->frame(drawUi());
+  imgui_->click(probe_.centre("tools/save"), drawUi());
+  imgui_->frame(drawUi());
+  ASSERT_TRUE(probe_.rects.count("tools/saveinscene")) << "the dialog offers the scene itself";
+  imgui_->click(probe_.centre("tools/saveinscene"), drawUi());
+
+  const json& tags = session_->json()["obstacles"][0]["shape"]["mesh"]["sharp_tags"];
+  ASSERT_TRUE(tags.is_object()) << session_->status;
+  EXPECT_EQ(sharpTagsFromJson(tags).vertices, ui_.panels.tool->tags().vertices);
+  EXPECT_FALSE(fs::exists(dir_.path() / "copied" / "sword.sharp.json")) << "no file beside the scene";
+  EXPECT_EQ(readText(shipped), shippedBefore) << "the shipped tags are untouched";
+  EXPECT_TRUE(ui_.panels.tool->inScene());
+  EXPECT_FALSE(ui_.panels.tool->document().dirty());
+  EXPECT_TRUE(session_->dirty()) << "the tags are a scene edit, saved with the scene";
+
+  session_->save();
+  EditorSession reopened(copied);
+  EXPECT_NE(reopened.world().obstacle(0).sharpVertex[vertex], wasSharp) << "read from the scene";
+  const ToolTagEditor again(reopened, 0);
+  EXPECT_TRUE(again.inScene()) << "its next save goes to the scene again";
+}
+
 }  // namespace
 }  // namespace weft::editor

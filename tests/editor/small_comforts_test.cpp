@@ -10,7 +10,9 @@
 
 #include "editor/editor_viewport.h"
 #include "editor/scene_edits.h"
+#include "editor/panels/preset_names.h"
 #include "support/editor_panels_fixture.h"
+#include "support/temp_dir.h"
 
 namespace weft::editor {
 namespace {
@@ -125,6 +127,24 @@ TEST_F(EditorPanelsTest, FFramesTheSelectedObstacleOrTheSceneKeepingTheViewDirec
   EXPECT_DOUBLE_EQ(ball.pitchDeg, 10.0);
   const ui::OrbitCamera scene = frameSelection(view, -1, current, 1.5);
   EXPECT_GT(scene.distance, 2.0 * ball.distance) << "the whole scene is farther than the ball alone";
+}
+
+}  // namespace
+}  // namespace weft::editor
+
+namespace weft::editor {
+namespace {
+
+// The scene list's tooltip (issue 21, item 8): each scene's own description, nothing for a file
+// that is not a readable scene.
+TEST(SceneList, EachSceneShowsItsDescription) {
+  const std::filesystem::path scenes = std::filesystem::path(WEFT_SOURCE_DIR) / "presets" / "scenes";
+  const std::string hanging = sceneDescription(scenes / "hanging-sheet.json");
+  EXPECT_EQ(hanging.rfind("A 1 m square of royal-target", 0), 0u) << hanging;
+  EXPECT_NE(sceneDescription(scenes / "ball-into-sheet-table4.1-cloth2.json").find("ball"), std::string::npos);
+  test::TempDir dir;
+  EXPECT_EQ(sceneDescription(dir.write("twice.json", R"({"description": "a", "description": "b"})")), "");
+  EXPECT_EQ(sceneDescription(dir.path() / "missing.json"), "");
 }
 
 }  // namespace

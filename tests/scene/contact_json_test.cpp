@@ -6,7 +6,9 @@
 #include <filesystem>
 #include <fstream>
 #include <random>
+#include <array>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -70,6 +72,28 @@ TEST(ContactJson, ObstaclesGroundAndContactAreRead) {
   EXPECT_GT(sharpEdges, 10);
 }
 
+// Sharp tags can live in the scene itself: "sharp_tags": {...} in the mesh shape, the tag file's
+// form, read instead of a tag file beside the mesh.
+TEST(ContactJson, SharpTagsWrittenInTheSceneAreReadInsteadOfTheFileBesideTheMesh) {
+  TempDir dir;
+  dir.write("tet.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 1 4 3\n");
+  dir.write("tet.sharp.json", R"({"sharp_vertices": [0, 1, 2]})");
+  const fs::path file = dir.write(
+      "inline.json",
+      sceneWithObstacle(R"({"shape": {"mesh": {"path": "tet.obj", "sharp_tags": {"sharp_edges": [[1, 0]], "sharp_vertices": [3]}}}})")
+          .dump(2));
+  const World world(loadScene(file));
+  const Obstacle& tet = world.obstacle(0);
+  EXPECT_EQ(std::vector<char>(tet.sharpVertex.begin(), tet.sharpVertex.end()), (std::vector<char>{0, 0, 0, 1}));
+  int sharpEdges = 0;
+  for (std::size_t e = 0; e < tet.sharpEdge.size(); ++e) {
+    if (!tet.sharpEdge[e]) continue;
+    ++sharpEdges;
+    EXPECT_EQ(tet.topology.edges[e], (std::array<int, 2>{0, 1}));
+  }
+  EXPECT_EQ(sharpEdges, 1);
+}
+
 struct BadObstacle {
   std::string name;
   std::string obstacle;  // the obstacle's JSON, or a patch for the whole scene when it starts with "scene:"
@@ -110,6 +134,18 @@ INSTANTIATE_TEST_SUITE_P(
     BadInput, ContactJsonRejects,
     ::testing::Values(
         BadObstacle{"MissingShape", R"({"name": "a"})", "/obstacles/0/shape", "missing"},
+        // Sharp tags written in the scene (issue 21, item 4): checked as a tag file is, named
+        // by the scene file and the field.
+        BadObstacle{"InlineTagOutOfRange", R"({"shape": {"mesh": {"path": "tet.obj", "sharp_tags": {"sharp_vertices": [9]}}}})",
+                    "/obstacles/0/shape/mesh/sharp_tags/sharp_vertices/0", "out of range"},
+        BadObstacle{"InlineTagNotAnEdge", R"({"shape": {"mesh": {"path": "tet.obj", "sharp_tags": {"sharp_edges": [[0, 0]]}}}})",
+                    "/obstacles/0/shape/mesh/sharp_tags/sharp_edges/0", "two different vertices"},
+        BadObstacle{"InlineTagsUnknownKey", R"({"shape": {"mesh": {"path": "tet.obj", "sharp_tags": {"sharp_edge": []}}}})",
+                    "/obstacles/0/shape/mesh/sharp_tags", "sharp_edge"},
+        BadObstacle{"InlineTagsNotAList", R"({"shape": {"mesh": {"path": "tet.obj", "sharp_tags": {"sharp_edges": 3}}}})",
+                    "/obstacles/0/shape/mesh/sharp_tags/sharp_edges", "array"},
+        BadObstacle{"TagsNeitherPathNorObject", R"({"shape": {"mesh": {"path": "tet.obj", "sharp_tags": 3}}})",
+                    "/obstacles/0/shape/mesh/sharp_tags", "sharp-tag file's path or the tags themselves"},
         BadObstacle{"TwoShapes", R"({"shape": {"sphere": {"radius": 1}, "box": {"half_extents": [1, 1, 1]}}})",
                     "/obstacles/0/shape", "exactly one"},
         BadObstacle{"UnknownShape", R"({"shape": {"torus": {}}})", "/obstacles/0/shape/torus", "allowed keys"},

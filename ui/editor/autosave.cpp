@@ -7,10 +7,12 @@
 #include <cstdlib>
 #include <ctime>
 #include <fstream>
+#include <sstream>
 #include <stdexcept>
 #include <system_error>
 
 #include "util/atomic_file.h"
+#include "util/json_text.h"
 
 namespace weft::editor {
 
@@ -58,13 +60,27 @@ std::string utcNow() {
   return text;
 }
 
+// A JSON file read as the headless readers read (util/json_text.h: no duplicate keys, bounded
+// depth), or nullopt when it cannot be read or is refused. Never throws.
+std::optional<json> readStrictly(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) return std::nullopt;
+  std::ostringstream text;
+  text << in.rdbuf();
+  try {
+    return parseJsonText(text.str(), file.string());
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
+}
+
 // An autosave file as written by write(), or nullopt for anything else: unreadable, not JSON, another
 // format version, a missing or mistyped field. Never throws.
 std::optional<Recovery> readAutosave(const fs::path& autosaveFile) {
-  std::ifstream in(autosaveFile, std::ios::binary);
-  if (!in) return std::nullopt;
-  const json j = json::parse(in, nullptr, /*allow_exceptions=*/false);
-  if (!j.is_object()) return std::nullopt;  // also a parse failure (discarded)
+  const std::optional<json> read = readStrictly(autosaveFile);
+  if (!read) return std::nullopt;
+  const json& j = *read;
+  if (!j.is_object()) return std::nullopt;
   const auto has = [&](const char* key, bool (json::*isType)() const noexcept) {
     const auto it = j.find(key);
     return it != j.end() && ((*it).*isType)();
@@ -79,10 +95,8 @@ std::optional<Recovery> readAutosave(const fs::path& autosaveFile) {
 // unparseable original, or different JSON.
 bool differsFromDisk(const Recovery& recovery) {
   if (recovery.original.empty()) return true;
-  std::ifstream in(recovery.original, std::ios::binary);
-  if (!in) return true;
-  const json onDisk = json::parse(in, nullptr, /*allow_exceptions=*/false);
-  return onDisk.is_discarded() || onDisk != recovery.document;
+  const std::optional<json> onDisk = readStrictly(recovery.original);
+  return !onDisk || *onDisk != recovery.document;
 }
 
 }  // namespace

@@ -63,11 +63,13 @@ void EditorSession::redo() {
 // Every state in the history parsed when it was committed, so parsing it again cannot fail.
 void EditorSession::applyDocument(const std::string& label) {
   Scene edited = parse(document_.json(), document_.file());
-  if (needsReset(world_->scene(), edited)) {
+  if (needsReset(liveScene_, edited)) {
     resetPending_ = true;
     status = label + ": applies after a reset";
   } else {
-    applyLiveEdits(*world_, edited);
+    // Between steps: the worker may be in the middle of one.
+    applyToWorld([edited](World& world) { applyLiveEdits(world, edited); });
+    liveScene_ = edited;
     resetPending_ = false;
     status = label + ": applied live";
   }
@@ -80,44 +82,147 @@ void EditorSession::reset() {
 }
 
 void EditorSession::rebuildWorld() {
-  world_ = std::make_unique<World>(scene_);
+  auto world = std::make_unique<World>(scene_);
+  if (worker_) {
+    collectSteps();
+    worker_->attach(std::move(world), scene_);
+  } else {
+    worker_ = std::make_unique<StepWorker>(std::move(world), scene_);
+  }
+  liveScene_ = scene_;
+  frameSteps_ = std::max<long long>(weft::stepsPerFrame(scene_), 1);
+  frames_.clear();
+  frames_.add(0, worker_->snapshot());
+  shownFrame_.reset();
+  rewinding_ = false;
   ++worldGeneration_;
   resetPending_ = false;
   stopped_ = false;
+  unhealthy_.reset();
   pendingSteps_ = 0.0;
+  meteredTime_ = 0.0;
 }
 
-void EditorSession::advance(long long steps, double budgetSeconds) {
-  double spent = 0.0;
-  for (long long s = 0; s < steps && !stopped_ && spent < budgetSeconds; ++s) {
-    const auto start = std::chrono::steady_clock::now();
-    world_->step();
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    spent += seconds;
-    meter_.addSteps(1, 1000.0 * seconds);
-    if (!stateIsFinite(*world_)) {
-      stopped_ = true;
-      status = "the simulation became non-finite at t = " + std::to_string(world_->time()) +
-               " s; reset, or take a smaller time step";
-    }
+EditorSession::~EditorSession() = default;
+
+const World& EditorSession::world() const { return worker_->idleWorld(); }
+
+World& EditorSession::world() {
+  World& world = worker_->worldWhenIdle();
+  collectSteps();
+  return world;
+}
+
+const World& EditorSession::worldBetweenSteps() { return worker_->worldBetweenSteps(); }
+
+std::shared_ptr<const WorldSnapshot> EditorSession::view() const {
+  if (shownFrame_) {
+    if (auto cached = frames_.find(*shownFrame_)) return cached;
+  }
+  return worker_->snapshot();
+}
+
+void EditorSession::applyToWorld(std::function<void(World&)> change) {
+  if (shownFrame_ && !rewinding_ && *shownFrame_ < liveFrame()) {
+    // Changing the world while looking at an earlier frame: it goes back to that frame, with the
+    // scene as the document has it now, and continues from there.
+    worker_->rewindTo(*shownFrame_ * frameSteps_);
+    worker_->apply([scene = liveScene_](World& world) { applyLiveEdits(world, scene); });
+    frames_.invalidateAfter(*shownFrame_);
+    rewinding_ = true;
+    stopped_ = false;
+  }
+  worker_->apply(std::move(change));
+}
+
+long long EditorSession::liveFrame() const { return worker_->snapshot()->stepCount / frameSteps_; }
+
+void EditorSession::showFrame(long long frame) {
+  paused = true;
+  const std::optional<long long> nearest = frames_.nearest(frame);
+  if (!nearest) return;
+  const std::shared_ptr<const WorldSnapshot> live = worker_->snapshot();
+  if (*nearest == frames_.lastFrame() && live->stepCount == *nearest * frameSteps_ && !rewinding_) {
+    shownFrame_.reset();  // the newest frame is the live world
+  } else {
+    shownFrame_ = *nearest;
+  }
+}
+
+void EditorSession::collectSteps() {
+  const std::optional<StepResult> result = worker_->takeResult();
+  if (!result) return;
+  for (double ms : result->stepMs) meter_.addSteps(1, ms);
+  if (result->rewoundTo) {
+    rewinding_ = false;
+    shownFrame_.reset();  // the world is at the shown frame again: live from here
+    frames_.invalidateAfter(*result->rewoundTo / frameSteps_);
+    meteredTime_ = worker_->snapshot()->time;
+  }
+  for (const auto& [frame, snapshot] : result->frames) frames_.add(frame, snapshot);
+  if (result->unhealthy && !unhealthy_) {
+    unhealthy_ = result->unhealthy;
+    status = "warning: " + healthWarning(*unhealthy_);
+  }
+  if (result->nonFiniteAt && !stopped_) {
+    stopped_ = true;
+    status = "the simulation became non-finite at t = " + std::to_string(*result->nonFiniteAt) +
+             " s; reset, or take a smaller time step";
   }
 }
 
 void EditorSession::advanceFrame(double wallSeconds) {
-  const double before = world_->time();
-  if (!paused && !stopped_) {
-    const double owed = std::max(speed, 0.0) * std::clamp(wallSeconds, 0.0, kMaxFrameSeconds);
-    pendingSteps_ += owed / world_->scene().solver.dt;
+  worker_->release();  // a click's pick held it
+  collectSteps();
+  if (shownFrame_ && !rewinding_) {
+    // Playing from an earlier frame: the cached frames first, at the scene's frame rate, then
+    // the simulation where it left off.
+    if (!paused) {
+      frameClock_ += std::max(speed, 0.0) * std::clamp(wallSeconds, 0.0, kMaxFrameSeconds) /
+                     (frameSteps_ * liveScene_.solver.dt);
+      const auto whole = static_cast<long long>(std::floor(frameClock_ + 1e-9));
+      frameClock_ -= static_cast<double>(whole);
+      if (whole > 0) {
+        const long long next = *shownFrame_ + whole;
+        if (next >= frames_.lastFrame()) {
+          shownFrame_.reset();
+        } else {
+          shownFrame_ = frames_.nearest(next);
+        }
+      }
+    }
+    meter_.frame(wallSeconds, 0.0);
+    return;
+  }
+  // What this frame shows: the steps finished before it (those asked for now are the next
+  // frames' to show).
+  const double shown = worker_->snapshot()->time;
+  meter_.frame(wallSeconds, std::max(shown - meteredTime_, 0.0));
+  meteredTime_ = shown;
+  if (!paused && !stopped_ && !rewinding_) {
+    const double dt = liveScene_.solver.dt;
+    pendingSteps_ += std::max(speed, 0.0) * std::clamp(wallSeconds, 0.0, kMaxFrameSeconds) / dt;
     // 1e-9: (1/30) / (1/60) must be 2 steps, not 1.999... of them.
     const double whole = std::floor(pendingSteps_ + 1e-9);
     pendingSteps_ = std::max(pendingSteps_ - whole, 0.0);
-    advance(static_cast<long long>(whole), kStepBudgetSeconds);  // steps over budget are dropped, not owed
+    const auto maxOwed = static_cast<long long>(std::floor(std::max(speed, 0.0) * kMaxFrameSeconds / dt + 1e-9));
+    worker_->ask(static_cast<long long>(whole), std::max(maxOwed, 1LL));  // beyond that: dropped, not owed
   }
-  meter_.frame(wallSeconds, std::max(world_->time() - before, 0.0));
 }
 
 void EditorSession::stepOnce() {
-  if (!stopped_) advance(1, std::numeric_limits<double>::infinity());
+  worker_->release();
+  collectSteps();
+  if (shownFrame_ && !rewinding_) {  // through the cached frames first
+    const long long next = *shownFrame_ + 1;
+    if (next >= frames_.lastFrame()) {
+      showFrame(frames_.lastFrame());
+    } else {
+      shownFrame_ = frames_.nearest(next);
+    }
+    return;
+  }
+  if (!stopped_) worker_->ask(1, worker_->owed() + 1);
 }
 
 void EditorSession::save() {

@@ -4,7 +4,13 @@
 // the session validates the result with the same strict reader `weft run` uses, then applies it
 // to the running world live where that is meaningful, or says that a reset is needed. No GL and
 // no ImGui here, so the whole editing model is tested without a window.
+//
+// The world steps on a worker thread (step_worker.h). The window and the panels read view(), a
+// snapshot taken after every step; changes to the running world go through applyToWorld(), which
+// the worker carries out between steps. world() waits for the steps asked so far to finish, so
+// code (and tests) that read the world itself see every step they asked for.
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -12,8 +18,11 @@
 #include <nlohmann/json.hpp>
 
 #include "editor/autosave.h"
+#include "editor/frame_cache.h"
 #include "editor/json_document.h"
 #include "editor/playback_meter.h"
+#include "editor/step_worker.h"
+#include "editor/world_snapshot.h"
 #include "scene/scene.h"
 #include "sim/world.h"
 
@@ -41,8 +50,37 @@ class EditorSession {
   const JsonDocument& document() const { return document_; }
   const nlohmann::json& json() const { return document_.json(); }
   const Scene& scene() const { return scene_; }  // the document, parsed
-  const World& world() const { return *world_; }
-  World& world() { return *world_; }
+  ~EditorSession();
+  EditorSession(const EditorSession&) = delete;
+  EditorSession& operator=(const EditorSession&) = delete;
+
+  // The world once the steps asked so far are done (waits for them): for a tool's tags, a reset,
+  // tests. The per-frame readers use view().
+  const World& world() const;
+  World& world();
+  // The world after the step in flight, without waiting for the other owed steps; they wait
+  // until the next frame (advanceFrame). For picking on a click; changes go through applyToWorld.
+  const World& worldBetweenSteps();
+  // What the window draws, without waiting: the world as of the latest step or change, or the
+  // cached frame the timeline shows.
+  std::shared_ptr<const WorldSnapshot> view() const;
+  // Changes the running world between steps: at once when no step runs, else queued for the
+  // worker. Looking at an earlier frame of the timeline, the simulation first goes back there:
+  // the frames after it are dropped and it continues from it with the change.
+  void applyToWorld(std::function<void(World&)> change);
+
+  // The timeline: output frames simulated since the last reset, cached (frame_cache.h).
+  const FrameCache& frames() const { return frames_; }
+  long long stepsPerFrame() const { return frameSteps_; }
+  // The frame the world is at (whole frames of steps, as far as the worker got).
+  long long liveFrame() const;
+  // Shows cached frame `frame` (the nearest cached one) instead of the live world, and pauses;
+  // the newest frame, when the world is at it, is the live world again.
+  void showFrame(long long frame);
+  void showLive() { shownFrame_.reset(); }
+  std::optional<long long> shownFrame() const { return shownFrame_; }
+  // A batch of steps is running on the worker.
+  bool stepping() const { return worker_->busy(); }
 
   // Validates `next`; when it parses, it becomes the document (one undo step, merged with the
   // previous one while `mergeKey` repeats, as a slider drag does) and is applied to the world.
@@ -60,19 +98,21 @@ class EditorSession {
   // when this changes.
   int worldGeneration() const { return worldGeneration_; }
 
-  // Playback in real time: a displayed frame that lasted `wallSeconds` advances the simulation by
-  // speed * wallSeconds (whole steps; the fraction of a step carries over), unless paused or
-  // stopped on a non-finite state. A frame owes at most kMaxFrameSeconds of wall time, and steps
-  // stop once they took kStepBudgetSeconds in a frame (after at least one): a heavy scene falls
-  // behind the target speed (the meter says by how much) while the window keeps answering,
-  // instead of taking ever longer frames to catch up.
+  // Playback in real time: a displayed frame that lasted `wallSeconds` asks the worker for
+  // speed * wallSeconds of simulation (whole steps; the fraction of a step carries over), unless
+  // paused or stopped on a non-finite state. Returns at once: the steps run on the worker. A
+  // frame owes at most kMaxFrameSeconds of wall time, and the worker is never owed more than
+  // that much simulation: a heavy scene falls behind the target speed (the meter says by how
+  // much; the meter counts what the worker finished) instead of owing ever more steps.
   bool paused = false;
   double speed = 1.0;
   static constexpr double kMaxFrameSeconds = 0.1;
-  static constexpr double kStepBudgetSeconds = 0.05;
   void advanceFrame(double wallSeconds);
-  void stepOnce();
+  void stepOnce();  // one step, on the worker, after the batch in flight
   bool stopped() const { return stopped_; }
+  // The health check's first failure since the last reset (the warning `weft run` prints);
+  // playback goes on, as `weft run --keep-going` does.
+  const std::optional<HealthFailure>& unhealthy() const { return unhealthy_; }
   const PlaybackMeter& meter() const { return meter_; }
 
   void save();                                   // atomic, keeping the previous file as FILE.bak
@@ -89,16 +129,24 @@ class EditorSession {
  private:
   void applyDocument(const std::string& label);
   void rebuildWorld();
-  void advance(long long steps, double budgetSeconds);
+  void collectSteps();  // the finished batch's step times and non-finite stop
 
   JsonDocument document_;
   Scene scene_;
-  std::unique_ptr<World> world_;
+  Scene liveScene_;  // the world's scene once the queued live edits are applied (decides resets)
+  std::unique_ptr<StepWorker> worker_;  // owns the world
+  FrameCache frames_;
+  long long frameSteps_ = 1;
+  std::optional<long long> shownFrame_;  // the timeline shows this cached frame (none: live)
+  bool rewinding_ = false;               // until the worker reports the rewind done
+  double frameClock_ = 0.0;              // playing through cached frames: the fraction of a frame
   bool resetPending_ = false;
   std::optional<Refusal> refusal_;
   int worldGeneration_ = 0;
   bool stopped_ = false;
+  std::optional<HealthFailure> unhealthy_;
   double pendingSteps_ = 0.0;  // the fraction of a step owed at slow speeds
+  double meteredTime_ = 0.0;      // simulated time the meter has counted up to
   PlaybackMeter meter_;
 };
 

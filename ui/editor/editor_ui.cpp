@@ -42,7 +42,7 @@ bool escapePressed() { return ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Es
 
 // A scene opens paused at t = 0; one line over the viewport says what to press.
 void drawStartHint(const EditorSession& session) {
-  if (!session.paused || session.world().stepCount() != 0) return;
+  if (!session.paused || session.view()->stepCount != 0) return;
   const char* hint = "Paused at t = 0:  Space plays, N steps, R resets, F frames";
   const ImVec2 size = ImGui::CalcTextSize(hint);
   const float x = 0.5f * (kLeftColumnWidth + ImGui::GetIO().DisplaySize.x - kRightColumnWidth) - 0.5f * size.x;
@@ -146,11 +146,11 @@ void drawEditorUi(EditorSession& session, EditorUi& ui) {
   const float left = m, leftWidth = kLeftColumnWidth - 2 * m;
   const float right = ImGui::GetIO().DisplaySize.x - kRightColumnWidth + m;
   const float top = kMenuBarHeight + m;
-  placeNext(left, top, leftWidth, 270);
+  placeNext(left, top, leftWidth, 250);
   drawScenePanel(session, ui.panels);
-  placeNext(left, top + 278, leftWidth, 150);
+  placeNext(left, top + 258, leftWidth, 192);  // room for the timeline
   drawPlaybackPanel(session, ui.panels);
-  placeNext(left, top + 436, leftWidth, 230);
+  placeNext(left, top + 458, leftWidth, 208);
   drawSolverPanel(session, ui.panels);
   placeNext(left, top + 674, leftWidth, 170);
   drawToolsPanel(session, ui.panels);

@@ -8,6 +8,7 @@
 
 #include "util/atomic_file.h"
 #include "util/input_error.h"
+#include "util/json_text.h"
 
 namespace weft::editor {
 
@@ -21,14 +22,21 @@ JsonDocument JsonDocument::open(const fs::path& file) {
   text << in.rdbuf();
   if (in.bad()) throw InputError(file.string(), "", "cannot read the file");
   const std::string contents = text.str();
+  // The headless readers' strict parser (util/json_text.h): a duplicate key, nesting too deep, a
+  // U+0000 or an out-of-range number is refused here as `weft run` refuses it, naming the key.
   try {
-    return JsonDocument(Json::parse(contents), file);
-  } catch (const Json::exception& strict) {  // a syntax error with its line and column, or an overflow
+    return JsonDocument(parseJsonText(contents, file.string()), file);
+  } catch (const InputError& strict) {
     // loadScene accepts comments; the editor must not drop them without a word on the next save.
-    const bool onlyComments = Json::accept(contents, /*ignore_comments=*/true);
+    bool onlyComments = false;
+    try {
+      (void)parseJsonText(contents, file.string(), JsonTextOptions{.allowComments = true});
+      onlyComments = true;
+    } catch (const InputError&) {
+    }
     if (onlyComments)
       throw InputError(file.string(), "", "holds comments, which saving from the editor would drop; remove them to edit it");
-    throw InputError(file.string(), "", std::string("not valid JSON: ") + strict.what());
+    throw;
   }
 }
 

@@ -19,7 +19,8 @@ namespace weft::editor {
 class JsonDocument {
  public:
   // Throws weft::InputError naming the file when it is missing, unreadable, not valid JSON (with the
-  // line and column) or holds comments.
+  // line and column), holds comments, or anything the headless readers refuse (util/json_text.h:
+  // a duplicate key, named with its JSON pointer; nesting too deep; U+0000; a number out of range).
   static JsonDocument open(const std::filesystem::path& file);
 
   JsonDocument(nlohmann::json initial, std::filesystem::path file);  // file may be empty (untitled)

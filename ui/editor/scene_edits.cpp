@@ -241,6 +241,14 @@ json withSharpTagsFile(const json& scene, int obstacle, const std::string& file)
   return out;
 }
 
+json withSharpTagsInline(const json& scene, int obstacle, const json& tags) {
+  json out = scene;
+  json& obstacles = out.at("obstacles");
+  if (obstacle < 0 || obstacle >= static_cast<int>(obstacles.size())) throw std::out_of_range("no such obstacle");
+  obstacles[static_cast<std::size_t>(obstacle)].at("shape").at("mesh")["sharp_tags"] = tags;
+  return out;
+}
+
 json withClothDuplicated(const json& scene, int cloth, const Vec3& offset) {
   json out = scene;
   json copy = clothJson(out, cloth);

@@ -58,6 +58,9 @@ nlohmann::json withObstacleAdded(const nlohmann::json& scene, const std::string&
 nlohmann::json withoutObstacle(const nlohmann::json& scene, int obstacle);
 // A mesh obstacle's sharp tags read from `file` ("sharp_tags", a path relative to the scene's folder).
 nlohmann::json withSharpTagsFile(const nlohmann::json& scene, int obstacle, const std::string& file);
+// The obstacle's mesh keeps its sharp tags in the scene itself: "sharp_tags": {...} (the tag
+// file's form), replacing a file path.
+nlohmann::json withSharpTagsInline(const nlohmann::json& scene, int obstacle, const nlohmann::json& tags);
 // A copy of cloth `cloth` moved by `offset` (m), named uniquely.
 nlohmann::json withClothDuplicated(const nlohmann::json& scene, int cloth, const Vec3& offset);
 nlohmann::json withoutCloth(const nlohmann::json& scene, int cloth);  // the last cloth cannot go

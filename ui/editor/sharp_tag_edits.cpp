@@ -111,7 +111,9 @@ JsonDocument openTags(const EditorSession& session, int obstacle) {
 
 ToolTagEditor::ToolTagEditor(const EditorSession& session, int obstacle)
     : obstacle_(obstacle), document_(openTags(session, obstacle)) {
-  name_ = session.scene().obstacles[static_cast<std::size_t>(obstacle)].name;
+  const ObstacleSpec& spec = session.scene().obstacles[static_cast<std::size_t>(obstacle)];
+  name_ = spec.name;
+  inScene_ = !spec.shape.sharpTagsInline.is_null();
 }
 
 bool ToolTagEditor::reapply(EditorSession& session) const {
@@ -179,10 +181,18 @@ std::filesystem::path ToolTagEditor::saveBesideScene(EditorSession& session) {
   return file;
 }
 
-bool ToolTagEditor::savesIntoInstalledData() const { return isInstalledData(document_.file()); }
+void ToolTagEditor::saveInScene(EditorSession& session) {
+  const EditResult result =
+      session.edit(withSharpTagsInline(session.json(), obstacle_, document_.json()), "sharp tags of " + name_ + " in the scene");
+  if (!result.accepted) throw std::invalid_argument(result.message);
+  document_.history().markSaved();  // what it holds is now the scene's, saved with the scene
+  inScene_ = true;
+}
+
+bool ToolTagEditor::savesIntoInstalledData() const { return !inScene_ && isInstalledData(document_.file()); }
 
 void ToolTagEditor::applyToWorld(EditorSession& session) const {
-  session.world().setObstacleSharpTags(obstacle_, tags());
+  session.applyToWorld([obstacle = obstacle_, tags = tags()](World& world) { world.setObstacleSharpTags(obstacle, tags); });
 }
 
 }  // namespace weft::editor

@@ -60,6 +60,11 @@ class ToolTagEditor {
   // obstacle at that file ("sharp_tags"), so a shipped tool's file is left alone and other scenes
   // using the tool are not changed. Returns the file written.
   std::filesystem::path saveBesideScene(EditorSession& session);
+  // Keeps the tags in the scene itself ("sharp_tags": {...} in the obstacle's mesh), as one
+  // scene edit (saved with the scene): no file beside the mesh or the scene is written.
+  void saveInScene(EditorSession& session);
+  // The tags live in the scene (opened so, or saved there): Save tags edits the scene.
+  bool inScene() const { return inScene_; }
   // Whether save() would write into Weft's installed assets (a shipped tool's tags).
   bool savesIntoInstalledData() const;
   // After the world was rebuilt (a reset): its obstacle has the file's tags again; puts the
@@ -74,6 +79,7 @@ class ToolTagEditor {
   int obstacle_;
   std::string name_;  // the obstacle's name, to notice it gone after a reset
   JsonDocument document_;
+  bool inScene_ = false;
 };
 
 }  // namespace weft::editor

@@ -1,6 +1,7 @@
 #include "viewport_interaction.h"
 
 #include <cmath>
+#include <utility>
 
 #include "contact/obstacle.h"
 #include "sim/pick.h"
@@ -24,20 +25,34 @@ bool ViewportInteraction::update(EditorSession& session, const ui::OrbitCamera& 
                                  ViewportKeys keys, int width, int height, ToolTagEditor* tags) {
   Vec3 origin, dir;
   ui::cameraRay(camera, mouse.x, mouse.y, width, height, origin, dir);
-  World& world = session.world();
   const bool pressed = mouse.left && !wasDown_;
   const bool released = !mouse.left && wasDown_;
   wasDown_ = mouse.left;
 
   // In tag mode, what a click would toggle, found (and shown) before the click.
-  hovered_.reset();
-  if (tags != nullptr && mode_ != Mode::Grab && mode_ != Mode::DragTool && mode_ != Mode::Box) {
+  // Picking reads the world: while a step runs, the last frame's pick stays shown (hovering must
+  // not wait for the step), and a press waits for the step so the click toggles what is under it.
+  // A cached frame of the timeline is for looking: the mouse orbits; grabbing and tagging work on
+  // the live world (an edit, Play or the end of the timeline goes back to it).
+  if (session.shownFrame()) {
+    hovered_.reset();
+    mode_ = Mode::Idle;
+    return false;
+  }
+  const bool hovering = tags != nullptr && mode_ != Mode::Grab && mode_ != Mode::DragTool && mode_ != Mode::Box;
+  if (!hovering) {
+    hovered_.reset();
+  } else if (pressed || !session.stepping()) {
     TagPickSettings pick;
     pick.edgePixels = settings_.tagTolerancePixels;
-    hovered_ = pickTagTarget(world, tags->obstacle(), camera, mouse.x, mouse.y, width, height, pick);
+    hovered_ = pickTagTarget(session.worldBetweenSteps(), tags->obstacle(), camera, mouse.x, mouse.y, width, height,
+                             pick);
   }
 
   if (pressed) {
+    // A press picks on the world itself: it waits for the step in flight (not for every owed
+    // step), so the click lands on what was drawn, and is never lost.
+    const World& world = session.worldBetweenSteps();
     mode_ = Mode::Orbit;  // unless the press lands on something below
     if (tags != nullptr && keys.shift) {
       mode_ = Mode::Box;
@@ -69,7 +84,9 @@ bool ViewportInteraction::update(EditorSession& session, const ui::OrbitCamera& 
     if (auto hit = pickCloth(world, origin, dir)) {
       mode_ = Mode::Grab;
       anchor_ = hit->point;
-      world.grab(hit->cloth, hit->vertex, hit->point, settings_.grabStiffness);
+      session.applyToWorld([hit = *hit, stiffness = settings_.grabStiffness](World& w) {
+        w.grab(hit.cloth, hit.vertex, hit.point, stiffness);
+      });
       return true;
     }
   }
@@ -77,7 +94,7 @@ bool ViewportInteraction::update(EditorSession& session, const ui::OrbitCamera& 
   if (released && mode_ == Mode::Box) {
     mode_ = Mode::Idle;
     if (tags != nullptr && std::abs(box_.x1 - box_.x0) > 2 && std::abs(box_.y1 - box_.y0) > 2) {
-      const auto edges = edgesInBox(world, tags->obstacle(), camera, box_.x0, box_.y0, box_.x1, box_.y1, width, height);
+      const auto edges = edgesInBox(session.worldBetweenSteps(), tags->obstacle(), camera, box_.x0, box_.y0, box_.x1, box_.y1, width, height);
       if (tags->tagEdges(session, edges, "tag the edges in a box") == 0) session.status = "no untagged edge in the box";
     }
     return true;
@@ -89,18 +106,20 @@ bool ViewportInteraction::update(EditorSession& session, const ui::OrbitCamera& 
   }
 
   if (released) {
-    if (mode_ == Mode::Grab) world.releaseGrab();
+    if (mode_ == Mode::Grab) session.applyToWorld([](World& world) { world.releaseGrab(); });
     const bool taken = mode_ == Mode::Grab || mode_ == Mode::DragTool;
     mode_ = Mode::Idle;
     return taken;
   }
 
   if (mode_ == Mode::Grab) {
-    world.moveGrab(onDragPlane(camera, anchor_, origin, dir));
+    const Vec3 target = onDragPlane(camera, anchor_, origin, dir);
+    session.applyToWorld([target](World& world) { world.moveGrab(target); });
     return true;
   }
   if (mode_ == Mode::DragTool) {
-    world.setKinematicOverride(tool_, onDragPlane(camera, anchor_, origin, dir) + toolOffset_);
+    const Vec3 position = onDragPlane(camera, anchor_, origin, dir) + toolOffset_;
+    session.applyToWorld([tool = tool_, position](World& world) { world.setKinematicOverride(tool, position); });
     return true;
   }
   return false;
@@ -111,8 +130,11 @@ void ViewportInteraction::throwBall(EditorSession& session, const ui::OrbitCamer
   Vec3 origin, dir;
   ui::cameraRay(camera, x, y, width, height, origin, dir);
   // From a little in front of the eye, so the ball starts in view.
-  session.world().throwBall(origin + 0.1 * camera.distance * dir, settings_.ballSpeed * dir, settings_.ballRadius,
-                            settings_.ballMass);
+  const Vec3 from = origin + 0.1 * camera.distance * dir;
+  const Vec3 velocity = settings_.ballSpeed * dir;
+  session.applyToWorld([from, velocity, radius = settings_.ballRadius, mass = settings_.ballMass](World& world) {
+    world.throwBall(from, velocity, radius, mass);
+  });
   session.status = "threw a ball (a reset removes it)";
 }
 

@@ -47,8 +47,6 @@ struct PanelState {
   int recordFrames = 120;
   bool recordVideo = true;
   std::filesystem::path openRequest;  // a scene the user chose to open (the editor asks about unsaved edits first)
-  WorldMetrics metrics;          // the solver panel's energy readout, and the step it is from
-  long long metricsStep = -1;
 };
 
 // Records the last drawn item under `id` when a probe is attached.

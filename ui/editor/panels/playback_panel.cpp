@@ -2,11 +2,42 @@
 // (real-time factor, ms a step, frame rate) measured beside it.
 #include <algorithm>
 #include <filesystem>
+#include <optional>
 #include <string>
 
 #include "panels.h"
 
 namespace weft::editor {
+
+namespace {
+
+// The scrub bar over the cached frames (frame_cache.h), the cache's size against its budget, and
+// what an edit does while an earlier frame is shown.
+void drawTimeline(EditorSession& session, PanelState& state) {
+  const FrameCache& frames = session.frames();
+  if (frames.empty()) return;
+  const long long live = session.liveFrame();
+  int frame = static_cast<int>(session.shownFrame().value_or(live));
+  ImGui::SetNextItemWidth(-1.0f);
+  if (ImGui::SliderInt("##timeline", &frame, static_cast<int>(frames.firstFrame()),
+                       static_cast<int>(std::max(frames.lastFrame(), live)), "frame %d")) {
+    session.showFrame(frame);
+  }
+  recordWidget(state, "play/timeline");
+  constexpr double kMiB = 1024.0 * 1024.0;
+  ImGui::TextDisabled("cache: %zu frames, %.1f of %.0f MB", frames.frameCount(), frames.bytes() / kMiB,
+                      frames.budgetBytes() / kMiB);
+  if (const std::optional<long long> shown = session.shownFrame()) {
+    if (ImGui::SmallButton("Live")) session.showLive();
+    recordWidget(state, "play/live");
+    ImGui::SameLine();
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.1f, 0.35f, 0.75f, 1.0f));
+    ImGui::TextWrapped("cached frame %lld of %lld: an edit continues from here", *shown, live);
+    ImGui::PopStyleColor();
+  }
+}
+
+}  // namespace
 
 void drawPlaybackPanel(EditorSession& session, PanelState& state) {
   if (!ImGui::Begin("Playback")) {
@@ -36,8 +67,18 @@ void drawPlaybackPanel(EditorSession& session, PanelState& state) {
   ImGui::TextWrapped("%s", playbackReadout(meter, session.speed, session.paused).c_str());
   if (behind) ImGui::PopStyleColor();
   recordWidget(state, "play/readout");
-  ImGui::Text("t = %.3f s   step %lld%s", session.world().time(), session.world().stepCount(),
+  const std::shared_ptr<const WorldSnapshot> shown = session.view();
+  ImGui::Text("t = %.3f s   step %lld%s", shown->time, shown->stepCount,
               session.stopped() ? "   STOPPED (non-finite)" : "");
+  if (const auto& unhealthy = session.unhealthy()) {
+    // The warning `weft run` prints for the same steps (sim/health_check.h), until a reset;
+    // above the timeline, so it is in view without scrolling.
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.8f, 0.1f, 0.1f, 1.0f));
+    ImGui::TextWrapped("warning: %s", healthWarning(*unhealthy).c_str());
+    ImGui::PopStyleColor();
+    recordWidget(state, "play/health");
+  }
+  drawTimeline(session, state);
   if (state.recorder != nullptr) {
     ImGui::Separator();
     ImGui::SetNextItemWidth(90);

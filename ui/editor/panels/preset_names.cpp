@@ -1,6 +1,10 @@
 #include "preset_names.h"
 
 #include <algorithm>
+#include <fstream>
+#include <sstream>
+
+#include "util/json_text.h"
 
 namespace weft::editor {
 
@@ -15,6 +19,20 @@ std::vector<std::string> presetNames(const std::vector<std::filesystem::path>& f
   std::sort(names.begin(), names.end());
   names.erase(std::unique(names.begin(), names.end()), names.end());
   return names;
+}
+
+std::string sceneDescription(const std::filesystem::path& sceneFile) {
+  std::ifstream in(sceneFile, std::ios::binary);
+  if (!in) return "";
+  std::ostringstream text;
+  text << in.rdbuf();
+  try {
+    const nlohmann::json scene = parseJsonText(text.str(), sceneFile.string(), JsonTextOptions{.allowComments = true});
+    const auto it = scene.is_object() ? scene.find("description") : scene.end();
+    return it != scene.end() && it->is_string() ? it->get<std::string>() : "";
+  } catch (const std::exception&) {
+    return "";
+  }
 }
 
 }  // namespace weft::editor

@@ -8,4 +8,8 @@ namespace weft::editor {
 
 std::vector<std::string> presetNames(const std::vector<std::filesystem::path>& folders);
 
+// A scene file's "description" (one or two sentences on what it shows), for the scene list; empty
+// when the file cannot be read strictly or has none. Never throws.
+std::string sceneDescription(const std::filesystem::path& sceneFile);
+
 }  // namespace weft::editor

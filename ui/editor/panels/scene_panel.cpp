@@ -9,6 +9,7 @@
 
 #include "editor/scene_edits.h"
 #include "panels.h"
+#include "preset_names.h"
 
 namespace weft::editor {
 
@@ -79,7 +80,8 @@ void drawObjects(EditorSession& session, PanelState& state) {
     if (ImGui::Selectable(scene.obstacles[static_cast<std::size_t>(i)].name.c_str(), state.obstacle == i)) state.obstacle = i;
   }
   // New obstacles appear beside the first cloth's first vertex, where they can be seen.
-  const Vec3 at = session.world().cloth(0).x.empty() ? Vec3::Zero() : session.world().cloth(0).x.front();
+  const std::shared_ptr<const WorldSnapshot> shown = session.view();
+  const Vec3 at = shown->cloths.empty() || shown->cloths[0].x.empty() ? Vec3::Zero() : shown->cloths[0].x.front();
   if (ImGui::SmallButton("Add sphere")) {
     tryEdit(session, [&] { return withObstacleAdded(session.json(), "sphere", at + Vec3(0.3, -0.3, 0.3), 0.1); },
             "add sphere");
@@ -147,6 +149,16 @@ void drawScenePanel(EditorSession& session, PanelState& state) {
   if (ImGui::BeginCombo("open", session.document().file().filename().string().c_str())) {
     for (const auto& file : scenesBeside(session.document().file())) {
       if (ImGui::Selectable(file.filename().string().c_str(), file == session.document().file())) state.openRequest = file;
+      if (ImGui::IsItemHovered()) {  // what the scene shows, before opening it
+        const std::string description = sceneDescription(file);
+        if (!description.empty()) {
+          ImGui::BeginTooltip();
+          ImGui::PushTextWrapPos(420.0f);
+          ImGui::TextUnformatted(description.c_str());
+          ImGui::PopTextWrapPos();
+          ImGui::EndTooltip();
+        }
+      }
     }
     ImGui::EndCombo();
   }
@@ -182,7 +194,7 @@ void drawScenePanel(EditorSession& session, PanelState& state) {
     }
   }
   ImGui::TextDisabled("runs now:");
-  for (const std::string& name : session.world().stagesRun()) {
+  for (const std::string& name : session.view()->stagesRun) {
     ImGui::SameLine();
     ImGui::TextDisabled("%s", name.c_str());
   }

@@ -68,28 +68,25 @@ void drawSolverPanel(EditorSession& session, PanelState& state) {
   showRefusal(session, "CG tolerance");
 
   ImGui::Separator();
-  const World& world = session.world();
-  const double steps = std::max<long long>(world.stepCount(), 1);
+  // The latest step's figures, read from the snapshot: the worker may be stepping.
+  const std::shared_ptr<const WorldSnapshot> shown = session.view();
+  const double steps = std::max<long long>(shown->stepCount, 1);
   ImGui::Text("mean step time by stage (ms):");
-  const StageProfile& profile = world.profile();
+  const StageProfile& profile = shown->profile;
   for (std::size_t i = 0; i < profile.names.size(); ++i) {
     ImGui::Text("  %-22s %8.3f", profile.names[i].c_str(), profile.totalMs[i] / steps);
   }
-  const SolverStats& stats = world.solverStats();
+  const SolverStats& stats = shown->solver;
   ImGui::Text("linear iterations per step %.1f, last residual %.2g", stats.linearIterations / steps,
               stats.lastLinearResidual);
   if (solver.integrator == IntegratorKind::Newton) {
     ImGui::Text("Newton iterations per step %.1f, last residual %.2g m/s", stats.newtonIterations / steps,
                 stats.lastNewtonResidual);
   }
-  ImGui::Text("tears %lld", world.tearStats().tears);
-  // Energies cost a force evaluation: refreshed every 30 steps, not every frame.
-  if (state.metricsStep < 0 || world.stepCount() < state.metricsStep || world.stepCount() - state.metricsStep >= 30) {
-    state.metrics = world.metrics();
-    state.metricsStep = world.stepCount();
-  }
-  ImGui::Text("energy: kinetic %.4g J, elastic %.4g J, gravity %.4g J", state.metrics.kineticEnergy,
-              state.metrics.elasticEnergy, state.metrics.gravityEnergy);
+  ImGui::Text("tears %lld", shown->tears);
+  // Energies cost a force evaluation: the snapshot refreshes them every few steps.
+  ImGui::Text("energy: kinetic %.4g J, elastic %.4g J, gravity %.4g J", shown->metrics.kineticEnergy,
+              shown->metrics.elasticEnergy, shown->metrics.gravityEnergy);
   ImGui::End();
 }
 

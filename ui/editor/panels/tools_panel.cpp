@@ -10,9 +10,15 @@ namespace weft::editor {
 
 namespace {
 
-void saveTags(EditorSession& session, ToolTagEditor& tool, bool besideScene) {
+enum class TagsGoTo { ToolFile, BesideScene, InScene };
+
+void saveTags(EditorSession& session, ToolTagEditor& tool, TagsGoTo where) {
   try {
-    if (besideScene) {
+    if (where == TagsGoTo::InScene) {
+      tool.saveInScene(session);
+      session.status = "the tags of " + session.scene().obstacles[static_cast<std::size_t>(tool.obstacle())].name +
+                       " are in the scene now; save the scene to keep them";
+    } else if (where == TagsGoTo::BesideScene) {
       const std::filesystem::path file = tool.saveBesideScene(session);
       session.status = "saved " + file.string() + "; the scene reads the tags from there";
     } else {
@@ -33,13 +39,19 @@ void drawTagsDialog(EditorSession& session, PanelState& state) {
                      session.scene().obstacles[static_cast<std::size_t>(state.tool->obstacle())].name.c_str(),
                      shipped.string().c_str());
   if (ImGui::Button("Save beside this scene")) {
-    saveTags(session, *state.tool, true);
+    saveTags(session, *state.tool, TagsGoTo::BesideScene);
     state.tagsDialog = false;
   }
   recordWidget(state, "tools/savebesidescene");
   ImGui::SameLine();
+  if (ImGui::Button("Keep them in this scene")) {
+    saveTags(session, *state.tool, TagsGoTo::InScene);
+    state.tagsDialog = false;
+  }
+  recordWidget(state, "tools/saveinscene");
+  ImGui::SameLine();
   if (ImGui::Button("Change the shipped file")) {
-    saveTags(session, *state.tool, false);
+    saveTags(session, *state.tool, TagsGoTo::ToolFile);
     state.tagsDialog = false;
   }
   recordWidget(state, "tools/saveshipped");
@@ -116,13 +128,20 @@ void drawToolsPanel(EditorSession& session, PanelState& state) {
     ImGui::EndDisabled();
     ImGui::SameLine();
     if (ImGui::Button("Save tags")) {
-      if (state.tool->savesIntoInstalledData()) {
+      if (state.tool->inScene()) {
+        saveTags(session, *state.tool, TagsGoTo::InScene);
+      } else if (state.tool->savesIntoInstalledData()) {
         state.tagsDialog = true;
       } else {
-        saveTags(session, *state.tool, false);
+        saveTags(session, *state.tool, TagsGoTo::ToolFile);
       }
     }
     recordWidget(state, "tools/save");
+    if (!state.tool->inScene()) {
+      ImGui::SameLine();
+      if (ImGui::Button("In the scene")) saveTags(session, *state.tool, TagsGoTo::InScene);
+      recordWidget(state, "tools/inscene");
+    }
     drawTagsDialog(session, state);
   } else {
     state.tagMode = false;

@@ -1,0 +1,242 @@
+#include "step_worker.h"
+
+#include <algorithm>
+#include <chrono>
+#include <utility>
+
+#include "sim/finite_state.h"
+
+namespace weft::editor {
+
+StepWorker::StepWorker(std::unique_ptr<World> world, Scene builtFrom)
+    : world_(std::move(world)),
+      builtFrom_(std::move(builtFrom)),
+      frameSteps_(std::max<long long>(stepsPerFrame(builtFrom_), 1)),
+      snapshot_(snapshotOf(*world_)),
+      health_(std::in_place, *world_, frameSteps_),
+      thread_([this] { run(); }) {}
+
+StepWorker::~StepWorker() {
+  abandonRewind_ = true;
+  {
+    std::lock_guard lock(mutex_);
+    quit_ = true;
+  }
+  wake_.notify_all();
+  thread_.join();
+}
+
+void StepWorker::attach(std::unique_ptr<World> world, Scene builtFrom) {
+  abandonRewind_ = true;
+  std::unique_lock lock(mutex_);
+  owed_ = 0;  // steps of the old world are not wanted: only the one running is waited for
+  held_ = false;
+  rewindTo_.reset();
+  idle_.wait(lock, [&] { return !running_; });
+  std::unique_ptr<World> old = std::exchange(world_, std::move(world));
+  builtFrom_ = std::move(builtFrom);
+  frameSteps_ = std::max<long long>(stepsPerFrame(builtFrom_), 1);
+  changeLog_.clear();
+  queued_.clear();
+  result_ = StepResult{};
+  snapshot_ = snapshotOf(*world_);
+  snapshotStale_ = false;
+  health_.emplace(*world_, frameSteps_);
+  rebaseHealth_ = false;
+  abandonRewind_ = false;
+}
+
+void StepWorker::rewindTo(long long step) {
+  {
+    std::lock_guard lock(mutex_);
+    rewindTo_ = std::max(step, 0LL);
+    owed_ = 0;
+    held_ = false;
+  }
+  wake_.notify_all();
+}
+
+void StepWorker::applyLogged(std::function<void(World&)> change) {
+  change(*world_);
+  changeLog_.emplace_back(world_->stepCount(), std::move(change));
+  snapshotStale_ = true;
+  rebaseHealth_ = true;
+}
+
+void StepWorker::ask(long long steps, long long maxOwed) {
+  {
+    std::lock_guard lock(mutex_);
+    if (steps <= 0) return;
+    owed_ = std::max(std::min(owed_ + steps, maxOwed), owed_ > 0 ? owed_ : 0LL);
+  }
+  wake_.notify_all();
+}
+
+long long StepWorker::owed() const {
+  std::lock_guard lock(mutex_);
+  return owed_ + (rewindTo_ ? 1 : 0);  // a rewind counts as work owed
+}
+
+void StepWorker::wait() {
+  std::unique_lock lock(mutex_);
+  held_ = false;  // waiting for every owed step lets the worker take them
+  wake_.notify_all();
+  idle_.wait(lock, [&] { return idle(); });
+}
+
+std::optional<StepResult> StepWorker::takeResult() {
+  std::lock_guard lock(mutex_);
+  if (result_.stepMs.empty() && !result_.nonFiniteAt && !result_.unhealthy && !result_.rewoundTo) return std::nullopt;
+  std::optional<StepResult> result = std::move(result_);
+  result_ = StepResult{};
+  return result;
+}
+
+void StepWorker::apply(std::function<void(World&)> edit) {
+  std::lock_guard lock(mutex_);
+  if (!uiOwnsWorld()) {
+    queued_.push_back(std::move(edit));
+    return;
+  }
+  applyLogged(std::move(edit));
+}
+
+World& StepWorker::worldWhenIdle() {
+  std::unique_lock lock(mutex_);
+  held_ = false;  // waiting for every owed step lets the worker take them
+  wake_.notify_all();
+  idle_.wait(lock, [&] { return idle(); });
+  snapshotStale_ = true;
+  rebaseHealth_ = true;
+  return *world_;
+}
+
+const World& StepWorker::idleWorld() {
+  std::unique_lock lock(mutex_);
+  held_ = false;
+  wake_.notify_all();
+  idle_.wait(lock, [&] { return idle(); });
+  return *world_;
+}
+
+const World& StepWorker::worldBetweenSteps() {
+  std::unique_lock lock(mutex_);
+  held_ = true;
+  idle_.wait(lock, [&] { return !running_ && !rewindTo_; });
+  applyQueued(lock);  // the user's earlier changes come first
+  return *world_;
+}
+
+void StepWorker::release() {
+  {
+    std::lock_guard lock(mutex_);
+    held_ = false;
+  }
+  wake_.notify_all();
+}
+
+std::shared_ptr<const WorldSnapshot> StepWorker::snapshot() {
+  std::lock_guard lock(mutex_);
+  if (uiOwnsWorld() && snapshotStale_) {
+    snapshot_ = snapshotOf(*world_, snapshot_.get());
+    snapshotStale_ = false;
+  }
+  return snapshot_;
+}
+
+// The UI's queued changes, in order. Runs on the worker between steps, holding the lock (edits are
+// short; the UI thread's apply() waits for them rather than racing them).
+void StepWorker::applyQueued(std::unique_lock<std::mutex>& lock) {
+  (void)lock;
+  if (queued_.empty()) return;
+  for (auto& edit : queued_) applyLogged(std::move(edit));
+  queued_.clear();
+  snapshot_ = snapshotOf(*world_, snapshot_.get());
+}
+
+void StepWorker::run() {
+  std::unique_lock lock(mutex_);
+  for (;;) {
+    wake_.wait(lock, [&] { return quit_ || rewindTo_ || (owed_ > 0 && !held_); });
+    if (quit_) return;
+    if (rewindTo_) {
+      rewind(lock);
+      continue;
+    }
+    applyQueued(lock);
+    running_ = true;
+    World& world = *world_;
+    std::shared_ptr<const WorldSnapshot> previous = snapshot_;
+    const bool rebase = std::exchange(rebaseHealth_, false);
+    lock.unlock();  // the step itself runs unlocked: the UI thread reads snapshots meanwhile
+    if (rebase && health_) health_.emplace(world, stepsPerFrame(world.scene()));
+    const auto begin = std::chrono::steady_clock::now();
+    world.step();
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+    const bool finite = stateIsFinite(world);
+    std::optional<HealthFailure> unhealthy;
+    if (health_ && !health_->afterStep(world)) {
+      unhealthy = health_->failure();
+      health_.reset();  // reported once, as `weft run` reports it
+    }
+    std::shared_ptr<const WorldSnapshot> next = snapshotOf(world, previous.get());
+    lock.lock();
+    running_ = false;
+    snapshot_ = std::move(next);
+    result_.stepMs.push_back(1000.0 * seconds);
+    if (world.stepCount() % frameSteps_ == 0) result_.frames.emplace_back(world.stepCount() / frameSteps_, snapshot_);
+    if (unhealthy) result_.unhealthy = std::move(unhealthy);
+    --owed_;
+    if (!finite) {
+      result_.nonFiniteAt = world.time();
+      owed_ = 0;
+    }
+    if (owed_ == 0) applyQueued(lock);  // nothing the user did waits for the next steps
+    idle_.notify_all();  // a step ended: worldBetweenSteps may go on
+  }
+}
+
+// Runs unlocked while it steps (running_): the UI reads the snapshot meanwhile and queues its
+// changes, which land on the rebuilt world.
+void StepWorker::rewind(std::unique_lock<std::mutex>& lock) {
+  const long long target = *rewindTo_;
+  std::vector<std::pair<long long, std::function<void(World&)>>> log = std::move(changeLog_);
+  changeLog_.clear();
+  running_ = true;
+  lock.unlock();
+  auto world = std::make_unique<World>(builtFrom_);
+  std::size_t next = 0;
+  for (;;) {
+    for (; next < log.size() && log[next].first == world->stepCount(); ++next) log[next].second(*world);
+    if (world->stepCount() >= target || abandonRewind_) break;
+    world->step();
+  }
+  if (abandonRewind_) {  // a reset or the end of the session: the old world stays until replaced
+    lock.lock();
+    changeLog_ = std::move(log);
+    rewindTo_.reset();
+    running_ = false;
+    idle_.notify_all();
+    return;
+  }
+  log.resize(next);  // what landed later is gone with the frames after this one
+  std::shared_ptr<const WorldSnapshot> snapshot = snapshotOf(*world);
+  lock.lock();
+  std::unique_ptr<World> old = std::exchange(world_, std::move(world));
+  changeLog_ = std::move(log);
+  snapshot_ = std::move(snapshot);
+  snapshotStale_ = false;
+  health_.emplace(*world_, frameSteps_);
+  rebaseHealth_ = false;
+  result_.frames.clear();  // stepped before the rewind: gone with it
+  result_.rewoundTo = world_->stepCount();
+  rewindTo_.reset();
+  running_ = false;
+  applyQueued(lock);
+  idle_.notify_all();
+  lock.unlock();
+  old.reset();  // a large world is freed without holding the UI up
+  lock.lock();
+}
+
+}  // namespace weft::editor

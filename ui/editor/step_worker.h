@@ -1,0 +1,126 @@
+#pragma once
+// Steps the editor's world on a thread of its own, so the window draws at the display's rate and
+// the panels answer while a step takes longer than a frame (issue 21, item 6).
+//
+// The handoff, in one rule: while steps are owed, only the worker touches the world. The UI
+// thread reads the latest snapshot (world_snapshot.h, published after every step) and hands its
+// changes to the world (live edits, the grab, a dragged tool, sharp tags, a thrown ball) to
+// apply(): carried out at once while the worker is idle, else queued and carried out by the
+// worker between two steps, in the order they were made. Code that must read the world itself
+// (picking on a click, a reset) first waits for the step in flight to end.
+//
+// Health: after every step the worker runs the health check `weft run` runs (sim/health_check.h)
+// and reports its first failure; the user's changes (a grab pulls, a thrown ball brings energy,
+// an edit of the wind) restart its energy baseline, since they are input the check cannot see.
+//
+// Rewinding (the timeline, item 7): every change applied is logged with the step it landed
+// after, so the world at an earlier step is rebuilt exactly: a fresh world from the scene it was
+// built from, stepped to there with the logged changes replayed where they landed (World::step
+// is deterministic). The log after that step is dropped: the simulation goes on from there.
+//
+// Determinism: the worker runs World::step exactly as `weft run` does, one after another; only
+// when an edit lands (between which two steps) depends on timing, as it does for any user.
+#include <atomic>
+#include <condition_variable>
+#include <cstddef>
+#include <functional>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "editor/world_snapshot.h"
+#include "sim/health_check.h"
+#include "sim/world.h"
+
+namespace weft::editor {
+
+// What the worker did since it was last asked, for the playback meter and the status bar.
+struct StepResult {
+  std::vector<double> stepMs;          // wall ms of each step taken
+  std::optional<double> nonFiniteAt;   // s: stepping stopped on a non-finite state at this time
+  std::optional<HealthFailure> unhealthy;  // the health check's first failure (stepping goes on)
+  // The snapshot at the end of every output frame stepped (for the timeline), frame number first.
+  std::vector<std::pair<long long, std::shared_ptr<const WorldSnapshot>>> frames;
+  std::optional<long long> rewoundTo;  // a rewind finished: the world is back at this step
+};
+
+class StepWorker {
+ public:
+  // Starts the thread, idle, on `world`, built from `builtFrom` (kept for rewinds).
+  StepWorker(std::unique_ptr<World> world, Scene builtFrom);
+  // Drops the owed steps after the one running (and a rewind in progress), and joins the thread.
+  ~StepWorker();
+  StepWorker(const StepWorker&) = delete;
+  StepWorker& operator=(const StepWorker&) = delete;
+
+  // Replaces the world (a reset built a new one): waits for the step in flight, drops the owed
+  // steps, a rewind in progress, the queued edits (they were for the old world) and the
+  // uncollected result.
+  void attach(std::unique_ptr<World> world, Scene builtFrom);
+
+  // Rebuilds the world as it was after `step` (see above) on the worker and returns at once;
+  // owed steps are dropped, changes applied after the call land on the rebuilt world.
+  void rewindTo(long long step);
+
+  // Asks for `steps` more steps and returns at once. The steps still owed never exceed
+  // `maxOwed`: when the worker is that far behind, further steps are dropped, not owed (a heavy
+  // scene falls behind real time instead of owing ever more). A non-finite state drops every
+  // owed step.
+  void ask(long long steps, long long maxOwed);
+  long long owed() const;  // steps asked for and not yet taken
+  bool busy() const { return owed() > 0; }
+  // Blocks until every step asked for is taken.
+  void wait();
+  // What was done since the last call (step times, a non-finite stop); none when nothing was.
+  std::optional<StepResult> takeResult();
+
+  // Changes the world between steps (see above). `edit` runs on the UI thread or the worker's.
+  void apply(std::function<void(World&)> edit);
+  // The world for the UI thread to read or change directly. worldWhenIdle waits for every owed
+  // step; worldBetweenSteps only for the step in flight, and holds the worker until release()
+  // (a click picks on the world without waiting for a heavy scene's owed steps). The snapshot is
+  // refreshed afterwards, since the caller may change the world.
+  World& worldWhenIdle();  // changes made through it are not logged: use apply()
+  const World& idleWorld();
+  const World& worldBetweenSteps();
+  void release();
+
+  // What the world looked like after the latest step or change.
+  std::shared_ptr<const WorldSnapshot> snapshot();
+
+ private:
+  void run();
+  void applyQueued(std::unique_lock<std::mutex>& lock);
+  bool uiOwnsWorld() const { return !running_ && !rewindTo_ && (owed_ == 0 || held_); }  // under mutex_
+  bool idle() const { return !running_ && !rewindTo_ && owed_ == 0; }                    // under mutex_
+  void applyLogged(std::function<void(World&)> change);  // under mutex_, the world not stepping
+  void rewind(std::unique_lock<std::mutex>& lock);
+
+  mutable std::mutex mutex_;
+  std::condition_variable wake_;  // steps owed, or quit
+  std::condition_variable idle_;  // a step ended
+  std::unique_ptr<World> world_;
+  Scene builtFrom_;
+  long long frameSteps_ = 1;  // steps of an output frame
+  std::vector<std::pair<long long, std::function<void(World&)>>> changeLog_;  // step landed after, change
+  std::optional<long long> rewindTo_;  // asked for, not yet done
+  long long owed_ = 0;  // steps asked for and not yet taken (the one running included)
+  StepResult result_;
+  std::vector<std::function<void(World&)>> queued_;
+  std::shared_ptr<const WorldSnapshot> snapshot_;
+  bool snapshotStale_ = false;
+  std::optional<HealthCheck> health_;  // none after its first failure, until attach()
+  bool rebaseHealth_ = false;          // the UI changed the world: the check starts afresh
+  bool running_ = false;  // a step is running (unlocked) on the worker
+  bool held_ = false;     // worldBetweenSteps: no step starts until release()  // the UI thread changed the world since the snapshot was taken
+  bool quit_ = false;
+  // A reset or the end of the session abandons a rewind in progress (it may be re-simulating
+  // many frames) instead of waiting for it; read by the worker between the rewind's steps.
+  std::atomic<bool> abandonRewind_{false};
+  std::thread thread_;  // last: started once everything above is ready
+};
+
+}  // namespace weft::editor
