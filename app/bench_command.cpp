@@ -28,6 +28,7 @@
 #include "command.h"
 #include "default_scene.h"
 #include "contact_bench.h"
+#include "solver_accuracy_bench.h"
 #include "tearing_bench.h"
 #include "machine_info.h"
 #include "material/elasticity.h"
@@ -59,6 +60,8 @@ struct BenchOptions {
   ContactBenchOptions contactOptions;
   bool tearing = false;   // time the tearing stage instead
   TearingBenchOptions tearingOptions;
+  bool solverAccuracy = false;  // compare the linear solvers' trajectories instead
+  SolverAccuracyOptions solverAccuracyOptions;
 };
 
 struct Configuration {
@@ -124,7 +127,14 @@ std::vector<std::string> overridesFor(const Configuration& config, const BenchOp
       "solver.integrator=" + sceneIntegratorName(config.integrator),
       "solver.threads=" + std::to_string(options.threads),
   };
-  if (config.solver != "none") overrides.push_back("solver.linear_solver.type=" + config.solver);
+  // "amg" is the CG with the multigrid preconditioner; "cg" keeps the scene's (the default lagged
+  // Cholesky).
+  if (config.solver == "amg") {
+    overrides.push_back("solver.linear_solver.type=cg");
+    overrides.push_back("solver.linear_solver.preconditioner=amg");
+  } else if (config.solver != "none") {
+    overrides.push_back("solver.linear_solver.type=" + config.solver);
+  }
   return overrides;
 }
 
@@ -277,9 +287,11 @@ Command addBenchCommand(CLI::App& app) {
       ->delimiter(',')
       ->check(CLI::IsMember({"lbe", "newton", "symplectic"}))
       ->capture_default_str();
-  cli->add_option("--solvers", options->solvers, "Linear solvers for lbe and newton: cg, cholmod, comma-separated")
+  cli->add_option("--solvers", options->solvers,
+                  "Linear solvers for lbe and newton: cg (lagged Cholesky), amg (CG with multigrid), cholmod, "
+                  "comma-separated")
       ->delimiter(',')
-      ->check(CLI::IsMember({"cg", "cholmod"}))
+      ->check(CLI::IsMember({"cg", "amg", "cholmod"}))
       ->capture_default_str();
   cli->add_option("--steps", options->steps, "Timed steps per repeat")->check(integerIn(1, 1'000'000))->capture_default_str();
   cli->add_option("--warmup", options->warmup, "Untimed steps before timing")
@@ -324,7 +336,25 @@ Command addBenchCommand(CLI::App& app) {
       ->check(CLI::Range(4, 1024))
       ->capture_default_str();
   cli->add_option("--tearing-csv", options->tearingOptions.csv, "Tearing benchmark: CSV output file")->capture_default_str();
+  cli->add_flag("--solver-accuracy", options->solverAccuracy,
+                "Instead of timing, run the scene for --solver-accuracy-duration seconds at each of --sizes with "
+                "each of --solvers and report the largest vertex distance to the first solver's run and the CG "
+                "residuals reached");
+  cli->add_option("--solver-accuracy-duration", options->solverAccuracyOptions.duration,
+                  "Solver accuracy: simulated seconds")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  cli->add_option("--solver-accuracy-csv", options->solverAccuracyOptions.csv, "Solver accuracy: CSV output file")
+      ->capture_default_str();
   return {cli, [options] {
+            if (options->solverAccuracy) {
+              SolverAccuracyOptions accuracy = options->solverAccuracyOptions;
+              accuracy.sizes = options->sizes;
+              accuracy.solvers = options->solvers;
+              accuracy.scene = options->scene;
+              accuracy.threads = options->threads;
+              return runSolverAccuracyBench(accuracy);
+            }
             if (options->tearing) {
               TearingBenchOptions tearing = options->tearingOptions;
               tearing.steps = options->steps;

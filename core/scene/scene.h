@@ -115,7 +115,7 @@ struct ForcesSpec {
 
 enum class IntegratorKind { LinearizedBackwardEuler, Newton, SymplecticEuler };
 enum class LinearSolverKind { ConjugateGradient, Cholmod };
-enum class PreconditionerKind { BlockJacobi, LaggedCholesky, LaggedExactCholesky };
+enum class PreconditionerKind { BlockJacobi, LaggedCholesky, LaggedExactCholesky, Amg };
 
 struct SolverSpec {
   double dt = 1.0 / 60.0;         // time step (s)
