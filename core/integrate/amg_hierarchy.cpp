@@ -100,10 +100,9 @@ void AmgHierarchy::refresh(const BlockSparseMatrix& finest) {
   levels_[0].A.blocks = finest.blocks;  // same size: no allocation
   for (int l = 0; l + 1 < levelCount(); ++l) {
     computeDiagonal(levels_[l]);
-    if (settings_.resmoothProlongators) {
-      estimateOmega(levels_[l]);
-      smoothProlongator(levels_[l]);
-    }
+    // omega is kept from the build: rho(D^-1 A) hardly moves while the topology holds, and its
+    // power iterations would cost as much as three V-cycles per step. Any omega gives a valid P.
+    if (settings_.resmoothProlongators) smoothProlongator(levels_[l]);
     galerkinProduct(l);
   }
   computeDiagonal(levels_.back());

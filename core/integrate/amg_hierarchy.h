@@ -12,7 +12,8 @@
 //     in aggregate J). Only translations: the coarse levels keep 3x3 blocks. The rotations of
 //     Tamstorf et al.'s near-null space are not included (see docs/solver.md);
 //   - prolongator P = (I - omega D^-1 A) T, omega = 4 / (3 rho(D^-1 A)) (Vanek et al.), D the
-//     3x3 block diagonal, rho estimated by a fixed number of power iterations (deterministic);
+//     3x3 block diagonal, rho estimated by a fixed number of power iterations (deterministic) at
+//     the build and kept while the topology holds;
 //   - Galerkin coarse operator A_c = P^T A P, symmetrized (rounding would otherwise leave it
 //     slightly unsymmetric and the V-cycle with it);
 //   - coarsest level: a dense Cholesky factorization.
