@@ -126,7 +126,8 @@ TEST(AmgPreconditioner, CgReachesTheDirectSolversAnswerOnAMovingSheet) {
 
 TEST(AmgPreconditioner, IterationsStayBoundedAsTheGridIsRefined) {
   // Block Jacobi's CG iterations grow about 2x per halving of the edge (sqrt of the condition
-  // number); multigrid's should hardly grow. Measured (tolerance 1e-8), 16², 32², 64²: see below.
+  // number); multigrid's should hardly grow. Measured (tolerance 1e-8) at 16², 32², 64²: multigrid
+  // 26, 32, 35; block Jacobi 304, 645, 1486.
   std::vector<int> amgIterations, jacobiIterations;
   for (int resolution : {16, 32, 64}) {
     const ClothSystem system = movingSheetSystem(resolution, 20);
