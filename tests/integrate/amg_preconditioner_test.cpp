@@ -179,6 +179,34 @@ TEST(AmgPreconditioner, RebuildsAfterThePatternGrowsAsInATear) {
   EXPECT_LT((x - expected).norm(), 1e-6 * expected.norm());
 }
 
+TEST(AmgPreconditioner, DegenerateHierarchiesStillSolve) {
+  // Every vertex pinned (identity rows, no couplings): nothing to coarsen, too large for the dense
+  // solve; the sweeps alone are exact on a block diagonal matrix.
+  SystemMatrix pinned;
+  pinned.setPattern(500, {{0, 1}, {1, 2}}, {});
+  pinned.setZero();
+  for (int i = 0; i < 500; ++i) pinned.addDiagonal(i, 1.0 + i % 7);
+  const Eigen::VectorXd b = randomVector(3 * 500, 9);
+  PreconditionedConjugateGradient cg(1e-12, 100);
+  AmgPreconditioner amg;
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(b.size());
+  const LinearSolveResult diagonal = cg.solve(pinned, b, 0.0, amg, x);
+  EXPECT_EQ(amg.hierarchy().levelCount(), 1);
+  EXPECT_FALSE(amg.hierarchy().coarsestFactored());
+  EXPECT_TRUE(diagonal.converged);
+  EXPECT_EQ(diagonal.iterations, 1);
+
+  // A system no larger than the coarsest level: the dense factor solves it at once.
+  const ClothSystem small = movingSheetSystem(6, 5);
+  AmgPreconditioner direct;
+  x = Eigen::VectorXd::Zero(small.b.size());
+  const LinearSolveResult exact = cg.solve(small.A, small.b, 0.0, direct, x);
+  EXPECT_EQ(direct.hierarchy().levelCount(), 1);
+  EXPECT_TRUE(direct.hierarchy().coarsestFactored());
+  EXPECT_TRUE(exact.converged);
+  EXPECT_LE(exact.iterations, 12);  // the factor is of the strong couplings only (the hinges' wings dropped)
+}
+
 std::uint64_t runHash(Scene scene, int threads, int steps) {
   scene.solver.threads = threads;
   World world(scene);
