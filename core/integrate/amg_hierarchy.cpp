@@ -96,14 +96,14 @@ void AmgHierarchy::build(const BlockSparseMatrix& finest) {
   factorCoarsest();
 }
 
-void AmgHierarchy::refresh(const BlockSparseMatrix& finest) {
+void AmgHierarchy::refresh(const BlockSparseMatrix& finest, int threads) {
   levels_[0].A.blocks = finest.blocks;  // same size: no allocation
   for (int l = 0; l + 1 < levelCount(); ++l) {
-    computeDiagonal(levels_[l]);
+    computeDiagonal(levels_[l], threads);
     // omega is kept from the build: rho(D^-1 A) hardly moves while the topology holds, and its
     // power iterations would cost as much as three V-cycles per step. Any omega gives a valid P.
-    if (settings_.resmoothProlongators) smoothProlongator(levels_[l]);
-    galerkinProduct(l);
+    if (settings_.resmoothProlongators) smoothProlongator(levels_[l], threads);
+    galerkinProduct(l, threads);
   }
   computeDiagonal(levels_.back());
   factorCoarsest();
@@ -147,11 +147,14 @@ bool AmgHierarchy::coarsen(int l) {
   }
   fine.AP.setPattern(n, coarseCount, columnsOfRow);
   fine.productSlots.clear();
-  for (int i = 0; i < n; ++i)
+  fine.productStart.assign(n + 1, 0);
+  for (int i = 0; i < n; ++i) {
     for (int k = A.rowStart[i]; k < A.rowStart[i + 1]; ++k) {
       const int j = A.column[k];
       for (int p = P.rowStart[j]; p < P.rowStart[j + 1]; ++p) fine.productSlots.push_back(fine.AP.find(i, P.column[p]));
     }
+    fine.productStart[i + 1] = static_cast<int>(fine.productSlots.size());
+  }
 
   // A_c = P^T (A P): block (I, K) gathers P(i, I)^T AP(i, K) over the fine vertices i.
   std::vector<std::vector<int>> coarseColumns(coarseCount);
@@ -175,9 +178,10 @@ bool AmgHierarchy::coarsen(int l) {
   return true;
 }
 
-void AmgHierarchy::computeDiagonal(Level& level) {
+void AmgHierarchy::computeDiagonal(Level& level, int threads) {
   const BlockSparseMatrix& A = level.A;
   level.inverseDiagonal.resize(A.blockRows);
+#pragma omp parallel for num_threads(A.threadsFor(threads)) schedule(static)
   for (int i = 0; i < A.blockRows; ++i) {
     const int d = A.find(i, i);
     level.inverseDiagonal[i] = d >= 0 ? safeInverse(A.blocks[d]) : Mat3::Identity();
@@ -204,11 +208,12 @@ void AmgHierarchy::estimateOmega(Level& level) {
   level.omega = 4.0 / (3.0 * 1.1 * std::max(rho, 1e-12));
 }
 
-void AmgHierarchy::smoothProlongator(Level& level) {
-  // P = (I - omega D^-1 A) T: T puts I at (i, aggregateOf[i]).
+void AmgHierarchy::smoothProlongator(Level& level, int threads) {
+  // P = (I - omega D^-1 A) T: T puts I at (i, aggregateOf[i]). Row i of A writes row i of P only.
   BlockSparseMatrix& P = level.P;
   const BlockSparseMatrix& A = level.A;
   P.setZero();
+#pragma omp parallel for num_threads(A.threadsFor(threads)) schedule(static)
   for (int i = 0; i < A.blockRows; ++i) {
     if (level.tentativeSlots[i] >= 0) P.blocks[level.tentativeSlots[i]] += Mat3::Identity();
     const Mat3 scaledInverse = level.omega * level.inverseDiagonal[i];
@@ -217,22 +222,26 @@ void AmgHierarchy::smoothProlongator(Level& level) {
   }
 }
 
-void AmgHierarchy::galerkinProduct(int l) {
+void AmgHierarchy::galerkinProduct(int l, int threads) {
   Level& fine = levels_[l];
   Level& coarse = levels_[l + 1];
   const BlockSparseMatrix& A = fine.A;
   const BlockSparseMatrix& P = fine.P;
   BlockSparseMatrix& AP = fine.AP;
   AP.setZero();
-  const int* slot = fine.productSlots.data();
-  for (int i = 0; i < A.blockRows; ++i)
+  // Row i of A writes row i of A P only: rows in parallel, each summed in the same order.
+#pragma omp parallel for num_threads(A.threadsFor(threads)) schedule(static)
+  for (int i = 0; i < A.blockRows; ++i) {
+    const int* slot = fine.productSlots.data() + fine.productStart[i];
     for (int k = A.rowStart[i]; k < A.rowStart[i + 1]; ++k) {
       const int j = A.column[k];
       for (int p = P.rowStart[j]; p < P.rowStart[j + 1]; ++p) AP.blocks[*slot++].noalias() += A.blocks[k] * P.blocks[p];
     }
+  }
+  // P^T (A P) scatters into the coarse rows: one thread.
   BlockSparseMatrix& Ac = coarse.A;
   Ac.setZero();
-  slot = fine.galerkinSlots.data();
+  const int* slot = fine.galerkinSlots.data();
   for (int i = 0; i < A.blockRows; ++i)
     for (int p = P.rowStart[i]; p < P.rowStart[i + 1]; ++p) {
       const Mat3 transposed = P.blocks[p].transpose();

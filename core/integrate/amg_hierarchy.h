@@ -55,6 +55,7 @@ class AmgHierarchy {
     std::vector<int> tentativeSlots;     // per vertex i: the slot of P(i, aggregateOf[i]) or -1
     std::vector<int> smoothingSlots;     // per block (i, j) of A: the slot of P(i, aggregateOf[j]) or -1
     std::vector<int> productSlots;       // per (block (i, j) of A, block (j, K) of P) in order: slot of AP(i, K)
+    std::vector<int> productStart;       // per row i of A: where its entries in productSlots start (n + 1)
     std::vector<int> galerkinSlots;      // per (block (i, I) of P, block (i, K) of AP) in order: slot of A_c(I, K)
     std::vector<int> transposeSlots;     // per block (I, K) of A: the slot of (K, I) (coarse levels: symmetrizing)
     double omega = 0.0;                  // prolongator smoothing weight
@@ -68,7 +69,8 @@ class AmgHierarchy {
   // couplings are fine).
   void build(const BlockSparseMatrix& finest);
   // Takes the values of `finest`, which must have the pattern build() saw, and redoes the numbers.
-  void refresh(const BlockSparseMatrix& finest);
+  // Row-wise parts over `threads` (same bits for any count).
+  void refresh(const BlockSparseMatrix& finest, int threads = 1);
 
   int levelCount() const { return static_cast<int>(levels_.size()); }
   const Level& level(int l) const { return levels_[l]; }
@@ -81,10 +83,10 @@ class AmgHierarchy {
 
  private:
   bool coarsen(int l);           // symbolic setup of level l -> l + 1 (aggregates, patterns, slots); false: stop here
-  void computeDiagonal(Level& level);
+  void computeDiagonal(Level& level, int threads = 1);
   void estimateOmega(Level& level);
-  void smoothProlongator(Level& level);
-  void galerkinProduct(int l);   // numeric: AP and A_c of level l + 1
+  void smoothProlongator(Level& level, int threads = 1);
+  void galerkinProduct(int l, int threads = 1);   // numeric: AP and A_c of level l + 1
   void factorCoarsest();
 
   AmgSettings settings_;

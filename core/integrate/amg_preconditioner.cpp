@@ -33,9 +33,11 @@ void gaussSeidelSweepFromZero(const AmgHierarchy::Level& level, const Eigen::Vec
   }
 }
 
-void residualAfterOneForwardSweep(const AmgHierarchy::Level& level, const Eigen::VectorXd& x, Eigen::VectorXd& outR) {
+void residualAfterOneForwardSweep(const AmgHierarchy::Level& level, const Eigen::VectorXd& x, Eigen::VectorXd& outR,
+                                  int threads) {
   const BlockSparseMatrix& A = level.A;
   outR.resize(x.size());
+#pragma omp parallel for num_threads(A.threadsFor(threads)) schedule(static)
   for (int i = 0; i < A.blockRows; ++i) {
     Vec3 sum = Vec3::Zero();
     for (int k = A.rowStart[i + 1] - 1; k >= A.rowStart[i] && A.column[k] > i; --k)
@@ -74,6 +76,7 @@ void AmgPreconditioner::analyze(const SystemMatrix& A) {
 void AmgPreconditioner::gather(const SystemMatrix& A) {
   if (dropsWeakCouplings_) approximation_.refill(A);
   const double* values = dropsWeakCouplings_ ? approximation_.matrix().valuePtr() : A.matrix().valuePtr();
+#pragma omp parallel for num_threads(finest_.threadsFor(threads_)) schedule(static)
   for (int s = 0; s < finest_.blockCount(); ++s)
     for (int c = 0; c < 3; ++c)
       for (int r = 0; r < 3; ++r) finest_.blocks[s](r, c) = values[gatherOffsets_[3 * s + c] + r];
@@ -87,7 +90,7 @@ void AmgPreconditioner::prepare(const SystemMatrix& A) {
     hierarchy_.build(finest_);
     ++fullSetups_;
   } else {
-    hierarchy_.refresh(finest_);
+    hierarchy_.refresh(finest_, threads_);
   }
 }
 
@@ -104,15 +107,15 @@ void AmgPreconditioner::cycle(int l, const Eigen::VectorXd& b, Eigen::VectorXd& 
   if (!coarsest) {
     AmgHierarchy::Level& coarse = hierarchy_.level(l + 1);
     if (settings_.smoothingSweeps == 1) {
-      residualAfterOneForwardSweep(level, x, level.residual);
+      residualAfterOneForwardSweep(level, x, level.residual, threads_);
     } else {
-      level.A.multiply(x, level.residual);
+      level.A.multiply(x, level.residual, threads_);
       level.residual = b - level.residual;
     }
     coarse.rhs.setZero(3 * static_cast<Eigen::Index>(coarse.A.blockRows));
     level.P.addTransposeProduct(level.residual, coarse.rhs);
     cycle(l + 1, coarse.rhs, coarse.solution);
-    level.P.multiply(coarse.solution, level.residual);
+    level.P.multiply(coarse.solution, level.residual, threads_);
     x += level.residual;
   }
   for (int sweep = 0; sweep < settings_.smoothingSweeps; ++sweep) gaussSeidelSweep(level, b, x, false);

@@ -20,8 +20,9 @@
 // cost of a few steps' numeric setup, see docs/solver.md); every other solve only gathers the new
 // values and redoes the numbers (prolongator smoothing, Galerkin products, coarsest factor).
 //
-// Deterministic: one thread, a fixed order of operations; the result does not depend on
-// solver.threads.
+// Deterministic: a fixed order of operations; the row-wise parts use solver.threads (fixed row
+// ranges, each row computed alike), and the result does not depend on the thread count.
+#include <algorithm>
 #include <vector>
 
 #include "integrate/amg_hierarchy.h"
@@ -43,6 +44,10 @@ class AmgPreconditioner final : public Preconditioner {
 
   void prepare(const SystemMatrix& A) override;
   void apply(const Eigen::VectorXd& inR, Eigen::VectorXd& outZ) override;
+  // The row-wise parts (products, residuals, prolongator smoothing, A P) split their rows over the
+  // threads in fixed ranges; the Gauss-Seidel sweeps and the scatters (restriction, P^T (A P)) stay
+  // on one thread. Every row is computed by the same code in the same order: the same bits.
+  void setThreads(int threads) override { threads_ = std::max(threads, 1); }
 
   // Full (symbolic) setups so far: one per pattern.
   int fullSetups() const { return fullSetups_; }
@@ -62,6 +67,7 @@ class AmgPreconditioner final : public Preconditioner {
   int analyzedPatternVersion_ = -1;
   Eigen::Index analyzedSize_ = -1;
   int fullSetups_ = 0;
+  int threads_ = 1;
 };
 
 }  // namespace weft

@@ -29,8 +29,9 @@ int BlockSparseMatrix::find(int row, int col) const {
 
 void BlockSparseMatrix::setZero() { std::fill(blocks.begin(), blocks.end(), Mat3::Zero()); }
 
-void BlockSparseMatrix::multiply(const Eigen::VectorXd& inX, Eigen::VectorXd& outY) const {
+void BlockSparseMatrix::multiply(const Eigen::VectorXd& inX, Eigen::VectorXd& outY, int threads) const {
   outY.resize(3 * static_cast<Eigen::Index>(blockRows));
+#pragma omp parallel for num_threads(threadsFor(threads)) schedule(static)
   for (int i = 0; i < blockRows; ++i) {
     Vec3 sum = Vec3::Zero();
     for (int k = rowStart[i]; k < rowStart[i + 1]; ++k) sum.noalias() += blocks[k] * inX.segment<3>(3 * column[k]);

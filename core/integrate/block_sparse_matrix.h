@@ -24,9 +24,14 @@ struct BlockSparseMatrix {
   int find(int row, int col) const;
   void setZero();
   int blockCount() const { return static_cast<int>(column.size()); }
+  // The threads worth using for a loop over this matrix's rows: 1 below a few thousand rows (the
+  // fork would cost more than it saves).
+  int threadsFor(int threads) const { return blockRows >= kRowsPerThread ? threads : 1; }
+  static constexpr int kRowsPerThread = 1500;
 
-  // outY = M inX.
-  void multiply(const Eigen::VectorXd& inX, Eigen::VectorXd& outY) const;
+  // outY = M inX; rows split over `threads` in fixed ranges (each row summed in the same order by
+  // any thread: the same bits for any count). Small matrices stay on one thread.
+  void multiply(const Eigen::VectorXd& inX, Eigen::VectorXd& outY, int threads = 1) const;
   // ioY += M^T inX.
   void addTransposeProduct(const Eigen::VectorXd& inX, Eigen::VectorXd& ioY) const;
 };

@@ -35,6 +35,10 @@ class ConjugateGradientSolver final : public LinearSolver {
     result.factorizations = preconditioner_->factorizations() - factorizationsBefore;
     return result;
   }
+  void setThreads(int threads) override {
+    cg_.setThreads(threads);
+    preconditioner_->setThreads(threads);
+  }
 
  private:
   PreconditionedConjugateGradient cg_;

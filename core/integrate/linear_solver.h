@@ -30,6 +30,8 @@ class LinearSolver {
   // stays meaningful at rest (see preconditioned_cg.h); 0 gives the plain relative criterion.
   virtual LinearSolveResult solve(const SystemMatrix& A, const Eigen::VectorXd& b, double rhsNormFloor,
                                   Eigen::VectorXd& x) = 0;
+  // Threads the solve may use (solver.threads). The answer does not depend on it, bit for bit.
+  virtual void setThreads(int /*threads*/) {}
 };
 
 std::unique_ptr<LinearSolver> makeLinearSolver(const SolverSpec& spec);

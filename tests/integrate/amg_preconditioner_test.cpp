@@ -225,6 +225,32 @@ TEST(AmgPreconditioner, StateHashDoesNotDependOnThreadCountOrRun) {
   EXPECT_EQ(runHash(scene, 2, 20), reference);
 }
 
+TEST(AmgPreconditioner, SolveIsTheSameBitsWithOneAndTwoThreads) {
+  // 64²: large enough that the CG's products and the finest level's row-wise parts (residual,
+  // prolongation, gathering, prolongator smoothing, A P) do split over two threads (the scene
+  // test above, at 16², stays below their thresholds).
+  const ClothSystem system = movingSheetSystem(64, 3);
+  ASSERT_GE(system.A.vertexCount(), 2 * BlockSparseMatrix::kRowsPerThread);
+  std::vector<Eigen::VectorXd> answers;
+  std::vector<int> iterations;
+  for (int threads : {1, 2}) {
+    AmgPreconditioner amg;
+    amg.setThreads(threads);
+    PreconditionedConjugateGradient cg(1e-8, 1000);
+    cg.setThreads(threads);
+    Eigen::VectorXd x = Eigen::VectorXd::Zero(system.b.size());
+    EXPECT_TRUE(cg.solve(system.A, system.b, 0.0, amg, x).converged);  // the build
+    Eigen::VectorXd again = Eigen::VectorXd::Zero(system.b.size());
+    const LinearSolveResult result = cg.solve(system.A, system.b, 0.0, amg, again);  // a refresh
+    EXPECT_TRUE(result.converged);
+    EXPECT_EQ(again, x);
+    answers.push_back(again);
+    iterations.push_back(result.iterations);
+  }
+  EXPECT_EQ(iterations[0], iterations[1]);
+  EXPECT_TRUE(answers[0] == answers[1]) << "largest difference " << (answers[0] - answers[1]).cwiseAbs().maxCoeff();
+}
+
 TEST(AmgPreconditioner, TearingSheetSolvesEveryStepAndStaysDeterministic) {
   Scene scene = test::biaxialSheet(16, test::tearTable({12.0, 14.0, 13.0}, 10.0), 10.0, false);
   scene.solver.linearPreconditioner = PreconditionerKind::Amg;
