@@ -17,12 +17,12 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
 
 }  // namespace
 
-double measureTriadBandwidth(long doubles) {
+double measureTriadBandwidth(long doubles, int repeats) {
   Eigen::VectorXd a = Eigen::VectorXd::Zero(doubles), b = Eigen::VectorXd::Constant(doubles, 1.0),
                   c = Eigen::VectorXd::Constant(doubles, 2.0);
   const double scalar = 3.0;
   double best = 1e30;
-  for (int repeat = 0; repeat < 5; ++repeat) {
+  for (int repeat = 0; repeat < repeats; ++repeat) {
     const auto start = std::chrono::steady_clock::now();
     a.noalias() = b + scalar * c;
     best = std::min(best, secondsSince(start));

@@ -10,9 +10,9 @@
 
 namespace weft::app {
 
-// Triad over three arrays of `doubles` doubles each (sized well beyond the caches: main memory),
-// best of a few repeats; bytes counted as STREAM does (two reads, one write). GB/s = 1e9 B/s.
-double measureTriadBandwidth(long doubles = 8L << 20);
+// Triad over three arrays of `doubles` doubles each (by default well beyond the caches: main
+// memory), best of `repeats`; bytes counted as STREAM does (two reads, one write). GB/s = 1e9 B/s.
+double measureTriadBandwidth(long doubles = 8L << 20, int repeats = 5);
 
 struct ProductBandwidth {
   double megabytes = 0.0;  // streamed per product: values, indices, x and y (MB = 1e6 B)
