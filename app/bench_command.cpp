@@ -28,10 +28,12 @@
 #include "command.h"
 #include "default_scene.h"
 #include "contact_bench.h"
+#include "solver_accuracy_bench.h"
 #include "tearing_bench.h"
 #include "machine_info.h"
 #include "material/elasticity.h"
 #include "metrics_writer.h"
+#include "roofline.h"
 #include "scene/scene_json.h"
 #include "scene/scene_limits.h"
 #include "sim/world.h"
@@ -59,6 +61,8 @@ struct BenchOptions {
   ContactBenchOptions contactOptions;
   bool tearing = false;   // time the tearing stage instead
   TearingBenchOptions tearingOptions;
+  bool solverAccuracy = false;  // compare the linear solvers' trajectories instead
+  SolverAccuracyOptions solverAccuracyOptions;
 };
 
 struct Configuration {
@@ -124,7 +128,14 @@ std::vector<std::string> overridesFor(const Configuration& config, const BenchOp
       "solver.integrator=" + sceneIntegratorName(config.integrator),
       "solver.threads=" + std::to_string(options.threads),
   };
-  if (config.solver != "none") overrides.push_back("solver.linear_solver.type=" + config.solver);
+  // "amg" is the CG with the multigrid preconditioner; "cg" keeps the scene's (the default lagged
+  // Cholesky).
+  if (config.solver == "amg") {
+    overrides.push_back("solver.linear_solver.type=cg");
+    overrides.push_back("solver.linear_solver.preconditioner=amg");
+  } else if (config.solver != "none") {
+    overrides.push_back("solver.linear_solver.type=" + config.solver);
+  }
   return overrides;
 }
 
@@ -260,6 +271,22 @@ int runBench(const BenchOptions& options) {
   }
 
   if (!writeBenchCsv(options.csv, csvText(results, options, sceneFile))) return kExitFailure;
+
+  // The roofline (roofline.h): per size, the CG's product with the system matrix against the
+  // machine's triad bandwidth, from memory and at the product's own footprint (a 64² matrix fits
+  // the caches). Measured after the cases so that their times are not disturbed.
+  const double triad = measureTriadBandwidth();
+  std::printf("\nmatrix-vector product of the CG (one thread) against the triad bandwidth (from memory: %.2f GB/s):\n", triad);
+  std::printf("%6s %12s %12s %10s %9s %18s %9s\n", "size", "MB/product", "ms/product", "GB/s", "of triad",
+              "triad same MB GB/s", "of that");
+  for (int size : options.sizes) {
+    const Scene scene = loadScene(sceneFile, overridesFor({size, "lbe", "cg"}, options));
+    const ProductBandwidth product = measureProductBandwidth(scene, sceneFile);
+    const double cachedTriad = measureTriadBandwidth(static_cast<long>(product.megabytes * 1e6 / 24.0), 50);
+    std::printf("%6d %12.3f %12.4f %10.2f %8.0f%% %18.2f %8.0f%%\n", size, product.megabytes, product.ms,
+                product.gigabytesPerSecond(), 100.0 * product.gigabytesPerSecond() / triad, cachedTriad,
+                100.0 * product.gigabytesPerSecond() / cachedTriad);
+  }
   const bool allFinite = std::all_of(results.begin(), results.end(), [](const Result& r) { return r.finite; });
   return allFinite ? kExitOk : kExitNonFinite;
 }
@@ -277,9 +304,11 @@ Command addBenchCommand(CLI::App& app) {
       ->delimiter(',')
       ->check(CLI::IsMember({"lbe", "newton", "symplectic"}))
       ->capture_default_str();
-  cli->add_option("--solvers", options->solvers, "Linear solvers for lbe and newton: cg, cholmod, comma-separated")
+  cli->add_option("--solvers", options->solvers,
+                  "Linear solvers for lbe and newton: cg (lagged Cholesky), amg (CG with multigrid), cholmod, "
+                  "comma-separated")
       ->delimiter(',')
-      ->check(CLI::IsMember({"cg", "cholmod"}))
+      ->check(CLI::IsMember({"cg", "amg", "cholmod"}))
       ->capture_default_str();
   cli->add_option("--steps", options->steps, "Timed steps per repeat")->check(integerIn(1, 1'000'000))->capture_default_str();
   cli->add_option("--warmup", options->warmup, "Untimed steps before timing")
@@ -324,7 +353,25 @@ Command addBenchCommand(CLI::App& app) {
       ->check(CLI::Range(4, 1024))
       ->capture_default_str();
   cli->add_option("--tearing-csv", options->tearingOptions.csv, "Tearing benchmark: CSV output file")->capture_default_str();
+  cli->add_flag("--solver-accuracy", options->solverAccuracy,
+                "Instead of timing, run the scene for --solver-accuracy-duration seconds at each of --sizes with "
+                "each of --solvers and report the largest vertex distance to the first solver's run and the CG "
+                "residuals reached");
+  cli->add_option("--solver-accuracy-duration", options->solverAccuracyOptions.duration,
+                  "Solver accuracy: simulated seconds")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  cli->add_option("--solver-accuracy-csv", options->solverAccuracyOptions.csv, "Solver accuracy: CSV output file")
+      ->capture_default_str();
   return {cli, [options] {
+            if (options->solverAccuracy) {
+              SolverAccuracyOptions accuracy = options->solverAccuracyOptions;
+              accuracy.sizes = options->sizes;
+              accuracy.solvers = options->solvers;
+              accuracy.scene = options->scene;
+              accuracy.threads = options->threads;
+              return runSolverAccuracyBench(accuracy);
+            }
             if (options->tearing) {
               TearingBenchOptions tearing = options->tearingOptions;
               tearing.steps = options->steps;

@@ -27,6 +27,7 @@ std::string preconditionerName(PreconditionerKind kind) {
     case PreconditionerKind::BlockJacobi: return "block_jacobi";
     case PreconditionerKind::LaggedCholesky: return "lagged_cholesky";
     case PreconditionerKind::LaggedExactCholesky: return "lagged_exact_cholesky";
+    case PreconditionerKind::Amg: return "amg";
   }
   return "unknown";
 }

@@ -20,6 +20,7 @@ void ImplicitSystem::topologyChanged(const Cloth& cloth, const TopologyChange& c
 
 void ImplicitSystem::beginStep(const Cloth& cloth, const StepInputs& inputs, StageProfile& profile) {
   ensurePattern(cloth);
+  solver->setThreads(inputs.threads);
   externalForces(cloth, inputs, externalForce, profile);
   pinTargets(cloth, inputs.time + inputs.dt, pinnedVertices, pinnedTargets, profile);
 }

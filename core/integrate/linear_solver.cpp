@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "integrate/amg_preconditioner.h"
 #include "integrate/block_jacobi_preconditioner.h"
 #include "integrate/lagged_cholesky_preconditioner.h"
 #include "integrate/preconditioned_cg.h"
@@ -17,6 +18,7 @@ std::unique_ptr<Preconditioner> makePreconditioner(PreconditionerKind kind) {
     case PreconditionerKind::LaggedCholesky: return std::make_unique<LaggedCholeskyPreconditioner>();
     case PreconditionerKind::LaggedExactCholesky:
       return std::make_unique<LaggedCholeskyPreconditioner>(LaggedCholeskyPreconditioner::Factored::WholeMatrix);
+    case PreconditionerKind::Amg: return std::make_unique<AmgPreconditioner>();
   }
   return std::make_unique<BlockJacobiPreconditioner>();
 }
@@ -32,6 +34,10 @@ class ConjugateGradientSolver final : public LinearSolver {
     LinearSolveResult result = cg_.solve(A, b, rhsNormFloor, *preconditioner_, x);
     result.factorizations = preconditioner_->factorizations() - factorizationsBefore;
     return result;
+  }
+  void setThreads(int threads) override {
+    cg_.setThreads(threads);
+    preconditioner_->setThreads(threads);
   }
 
  private:

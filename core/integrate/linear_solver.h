@@ -2,7 +2,8 @@
 // Linear solvers for the implicit integrators, chosen by SolverSpec:
 //   - cg: our preconditioned conjugate gradient (preconditioned_cg.h) with the preconditioner named
 //     by SolverSpec::linearPreconditioner: a lagged sparse Cholesky factor of the strong couplings
-//     of A (the default) or of A itself (lagged_cholesky_preconditioner.h), or block Jacobi;
+//     of A (the default) or of A itself (lagged_cholesky_preconditioner.h), one V-cycle of a
+//     smoothed-aggregation multigrid hierarchy (amg_preconditioner.h), or block Jacobi;
 //   - cholmod: a sparse Cholesky factorization of A (sparse_cholesky.h) every solve.
 #include <memory>
 
@@ -29,6 +30,8 @@ class LinearSolver {
   // stays meaningful at rest (see preconditioned_cg.h); 0 gives the plain relative criterion.
   virtual LinearSolveResult solve(const SystemMatrix& A, const Eigen::VectorXd& b, double rhsNormFloor,
                                   Eigen::VectorXd& x) = 0;
+  // Threads the solve may use (solver.threads). The answer does not depend on it, bit for bit.
+  virtual void setThreads(int /*threads*/) {}
 };
 
 std::unique_ptr<LinearSolver> makeLinearSolver(const SolverSpec& spec);

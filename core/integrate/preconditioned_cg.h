@@ -26,8 +26,13 @@ class PreconditionedConjugateGradient {
 
   LinearSolveResult solve(const SystemMatrix& A, const Eigen::VectorXd& b, double rhsNormFloor,
                           Preconditioner& preconditioner, Eigen::VectorXd& x);
+  // Threads of the products with A: each thread multiplies a fixed range of rows with the same code
+  // as one thread does, so the result is the same bits for any count. The vector updates and dot
+  // products stay on one thread (a parallel sum would change its rounding with the thread count).
+  void setThreads(int threads) { threads_ = threads; }
 
  private:
+  int threads_ = 1;
   double tolerance_;
   int maxIterations_;
   Eigen::VectorXd residual_, preconditioned_, direction_, product_;

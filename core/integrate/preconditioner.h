@@ -20,6 +20,8 @@ class Preconditioner {
   virtual bool refreshIfStale(const SystemMatrix& /*A*/, int /*iterationsThisSolve*/) { return false; }
   // Called at the end of every solve that prepared the preconditioner, with its iteration count.
   virtual void solveFinished(int /*iterations*/) {}
+  // Threads apply() and prepare() may use (solver.threads); results must not depend on it.
+  virtual void setThreads(int /*threads*/) {}
   // Sparse factorizations done so far (for statistics and tests).
   virtual int factorizations() const { return 0; }
 };

@@ -115,7 +115,7 @@ struct ForcesSpec {
 
 enum class IntegratorKind { LinearizedBackwardEuler, Newton, SymplecticEuler };
 enum class LinearSolverKind { ConjugateGradient, Cholmod };
-enum class PreconditionerKind { BlockJacobi, LaggedCholesky, LaggedExactCholesky };
+enum class PreconditionerKind { BlockJacobi, LaggedCholesky, LaggedExactCholesky, Amg };
 
 struct SolverSpec {
   double dt = 1.0 / 60.0;         // time step (s)
@@ -127,7 +127,7 @@ struct SolverSpec {
   PreconditionerKind linearPreconditioner = PreconditionerKind::LaggedCholesky;  // CG: see integrate/linear_solver.h
   double linearTolerance = 1e-6;  // CG: stop at |r| <= tolerance * max(|b|, |one step's external impulse| in b's units)
   int linearMaxIterations = 1000; // CG: iteration bound
-  int threads = 1;                // worker threads for force assembly (results do not depend on it)
+  int threads = 1;                // worker threads: force assembly and the CG/multigrid row-wise products (results do not depend on it)
 
   friend bool operator==(const SolverSpec&, const SolverSpec&) = default;
 };

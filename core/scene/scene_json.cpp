@@ -329,8 +329,9 @@ PreconditionerKind parsePreconditioner(const FieldReader& r) {
   if (name == "block_jacobi") return PreconditionerKind::BlockJacobi;
   if (name == "lagged_cholesky") return PreconditionerKind::LaggedCholesky;
   if (name == "lagged_exact_cholesky") return PreconditionerKind::LaggedExactCholesky;
+  if (name == "amg") return PreconditionerKind::Amg;
   r.fail(r.pointer("preconditioner"), "unknown preconditioner \"" + echo(name) +
-                                          "\"; expected lagged_cholesky, lagged_exact_cholesky or block_jacobi");
+                                          "\"; expected lagged_cholesky, lagged_exact_cholesky, amg or block_jacobi");
 }
 
 SolverSpec parseSolver(const json& j, const std::string& pointer, const SceneReadContext& ctx) {

@@ -99,7 +99,7 @@ SolverSpec cgSpec(PreconditionerKind preconditioner, double tolerance) {
 }
 
 const PreconditionerKind kAllPreconditioners[] = {PreconditionerKind::BlockJacobi, PreconditionerKind::LaggedCholesky,
-                                                  PreconditionerKind::LaggedExactCholesky};
+                                                  PreconditionerKind::LaggedExactCholesky, PreconditionerKind::Amg};
 
 TEST(SystemMatrix, WeakPairsAreThoseNotAlsoStronglyCoupled) {
   SystemMatrix A;
@@ -186,6 +186,7 @@ INSTANTIATE_TEST_SUITE_P(LinearSolver, EveryPreconditioner, ::testing::ValuesIn(
                              case PreconditionerKind::BlockJacobi: return std::string("BlockJacobi");
                              case PreconditionerKind::LaggedCholesky: return std::string("LaggedCholesky");
                              case PreconditionerKind::LaggedExactCholesky: return std::string("LaggedExactCholesky");
+                             case PreconditionerKind::Amg: return std::string("Amg");
                            }
                            return std::string("Unknown");
                          });

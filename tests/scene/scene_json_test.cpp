@@ -155,7 +155,8 @@ TEST(SceneJson, PreconditionerIsReadByName) {
   const std::pair<const char*, PreconditionerKind> names[] = {
       {"lagged_cholesky", PreconditionerKind::LaggedCholesky},
       {"lagged_exact_cholesky", PreconditionerKind::LaggedExactCholesky},
-      {"block_jacobi", PreconditionerKind::BlockJacobi}};
+      {"block_jacobi", PreconditionerKind::BlockJacobi},
+      {"amg", PreconditionerKind::Amg}};
   for (const auto& [name, kind] : names) {
     const Scene scene = loadScene(file, {std::string("solver.linear_solver.preconditioner=") + name});
     EXPECT_EQ(scene.solver.linearPreconditioner, kind) << name;

@@ -1,0 +1,278 @@
+#include "integrate/amg_hierarchy.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <Eigen/LU>  // computeInverseAndDetWithCheck
+
+namespace weft {
+namespace {
+
+constexpr int kUnassigned = -2;
+constexpr int kIsolated = -1;
+
+// Strong neighbours of every vertex (Vanek et al. 1996, eq. 3.2, with Frobenius norms of blocks).
+std::vector<std::vector<int>> strongNeighbours(const BlockSparseMatrix& A, double theta) {
+  const int n = A.blockRows;
+  std::vector<double> diagonalNorm(n, 0.0);
+  for (int i = 0; i < n; ++i) {
+    const int d = A.find(i, i);
+    if (d >= 0) diagonalNorm[i] = A.blocks[d].norm();
+  }
+  std::vector<std::vector<int>> strong(n);
+  for (int i = 0; i < n; ++i) {
+    for (int k = A.rowStart[i]; k < A.rowStart[i + 1]; ++k) {
+      const int j = A.column[k];
+      if (j == i) continue;
+      const double norm = A.blocks[k].norm();
+      if (norm > 0.0 && norm >= theta * std::sqrt(diagonalNorm[i] * diagonalNorm[j])) strong[i].push_back(j);
+    }
+  }
+  return strong;
+}
+
+// The three passes of Vanek et al. 1996 (section 4.1), in vertex order: deterministic.
+// Returns the aggregate count; aggregateOf[i] = kIsolated for vertices without strong neighbours.
+int aggregate(const std::vector<std::vector<int>>& strong, std::vector<int>& aggregateOf) {
+  const int n = static_cast<int>(strong.size());
+  aggregateOf.assign(n, kUnassigned);
+  int count = 0;
+  for (int i = 0; i < n; ++i) {
+    if (strong[i].empty()) aggregateOf[i] = kIsolated;
+  }
+  // 1. Roots: a free vertex whose strong neighbours are all free takes them.
+  for (int i = 0; i < n; ++i) {
+    if (aggregateOf[i] != kUnassigned) continue;
+    const bool allFree = std::all_of(strong[i].begin(), strong[i].end(), [&](int j) { return aggregateOf[j] == kUnassigned; });
+    if (!allFree) continue;
+    aggregateOf[i] = count;
+    for (int j : strong[i]) aggregateOf[j] = count;
+    ++count;
+  }
+  // 2. The rest join the aggregate of their first strong neighbour aggregated in pass 1.
+  const std::vector<int> afterRoots = aggregateOf;
+  for (int i = 0; i < n; ++i) {
+    if (aggregateOf[i] != kUnassigned) continue;
+    for (int j : strong[i]) {
+      if (afterRoots[j] >= 0) {
+        aggregateOf[i] = afterRoots[j];
+        break;
+      }
+    }
+  }
+  // 3. Whatever is left forms aggregates with its free strong neighbours.
+  for (int i = 0; i < n; ++i) {
+    if (aggregateOf[i] != kUnassigned) continue;
+    aggregateOf[i] = count;
+    for (int j : strong[i])
+      if (aggregateOf[j] == kUnassigned) aggregateOf[j] = count;
+    ++count;
+  }
+  return count;
+}
+
+Mat3 safeInverse(const Mat3& block) {
+  Mat3 inverse;
+  bool invertible = false;
+  double determinant = 0.0;
+  block.computeInverseAndDetWithCheck(inverse, determinant, invertible);
+  return invertible && inverse.allFinite() ? inverse : Mat3::Identity();  // cannot happen for an SPD A; stay finite
+}
+
+}  // namespace
+
+void AmgHierarchy::build(const BlockSparseMatrix& finest) {
+  levels_.clear();
+  levels_.emplace_back();
+  levels_[0].A = finest;
+  for (int l = 0;; ++l) {
+    computeDiagonal(levels_[l]);
+    if (levels_[l].A.blockRows <= settings_.coarsestVertices || l + 1 >= settings_.maxLevels) break;
+    if (!coarsen(l)) break;
+    estimateOmega(levels_[l]);
+    smoothProlongator(levels_[l]);
+    galerkinProduct(l);
+  }
+  factorCoarsest();
+}
+
+void AmgHierarchy::refresh(const BlockSparseMatrix& finest, int threads) {
+  levels_[0].A.blocks = finest.blocks;  // same size: no allocation
+  for (int l = 0; l + 1 < levelCount(); ++l) {
+    computeDiagonal(levels_[l], threads);
+    // omega is kept from the build: rho(D^-1 A) hardly moves while the topology holds, and its
+    // power iterations would cost as much as three V-cycles per step. Any omega gives a valid P.
+    if (settings_.resmoothProlongators) smoothProlongator(levels_[l], threads);
+    galerkinProduct(l, threads);
+  }
+  computeDiagonal(levels_.back());
+  factorCoarsest();
+}
+
+bool AmgHierarchy::coarsen(int l) {
+  Level& fine = levels_[l];
+  const BlockSparseMatrix& A = fine.A;
+  const int n = A.blockRows;
+  const int coarseCount = aggregate(strongNeighbours(A, settings_.strengthThreshold), fine.aggregateOf);
+  if (coarseCount == 0 || coarseCount > settings_.stallRatio * n) {
+    fine.aggregateOf.clear();
+    return false;
+  }
+  const std::vector<int>& aggregateOf = fine.aggregateOf;
+
+  // P's pattern: the aggregates of a vertex and of its neighbours in A.
+  std::vector<std::vector<int>> columnsOfRow(n);
+  for (int i = 0; i < n; ++i) {
+    if (aggregateOf[i] >= 0) columnsOfRow[i].push_back(aggregateOf[i]);
+    for (int k = A.rowStart[i]; k < A.rowStart[i + 1]; ++k)
+      if (aggregateOf[A.column[k]] >= 0) columnsOfRow[i].push_back(aggregateOf[A.column[k]]);
+  }
+  fine.P.setPattern(n, coarseCount, columnsOfRow);
+  fine.tentativeSlots.assign(n, -1);
+  fine.smoothingSlots.assign(A.blockCount(), -1);
+  for (int i = 0; i < n; ++i) {
+    if (aggregateOf[i] >= 0) fine.tentativeSlots[i] = fine.P.find(i, aggregateOf[i]);
+    for (int k = A.rowStart[i]; k < A.rowStart[i + 1]; ++k)
+      if (aggregateOf[A.column[k]] >= 0) fine.smoothingSlots[k] = fine.P.find(i, aggregateOf[A.column[k]]);
+  }
+
+  // A P: row i holds the columns of P's rows j over the blocks (i, j) of A.
+  const BlockSparseMatrix& P = fine.P;
+  for (int i = 0; i < n; ++i) {
+    columnsOfRow[i].clear();
+    for (int k = A.rowStart[i]; k < A.rowStart[i + 1]; ++k) {
+      const int j = A.column[k];
+      columnsOfRow[i].insert(columnsOfRow[i].end(), P.column.begin() + P.rowStart[j], P.column.begin() + P.rowStart[j + 1]);
+    }
+  }
+  fine.AP.setPattern(n, coarseCount, columnsOfRow);
+  fine.productSlots.clear();
+  fine.productStart.assign(n + 1, 0);
+  for (int i = 0; i < n; ++i) {
+    for (int k = A.rowStart[i]; k < A.rowStart[i + 1]; ++k) {
+      const int j = A.column[k];
+      for (int p = P.rowStart[j]; p < P.rowStart[j + 1]; ++p) fine.productSlots.push_back(fine.AP.find(i, P.column[p]));
+    }
+    fine.productStart[i + 1] = static_cast<int>(fine.productSlots.size());
+  }
+
+  // A_c = P^T (A P): block (I, K) gathers P(i, I)^T AP(i, K) over the fine vertices i.
+  std::vector<std::vector<int>> coarseColumns(coarseCount);
+  const BlockSparseMatrix& AP = fine.AP;
+  for (int i = 0; i < n; ++i)
+    for (int p = P.rowStart[i]; p < P.rowStart[i + 1]; ++p)
+      coarseColumns[P.column[p]].insert(coarseColumns[P.column[p]].end(), AP.column.begin() + AP.rowStart[i],
+                                        AP.column.begin() + AP.rowStart[i + 1]);
+  Level coarse;
+  coarse.A.setPattern(coarseCount, coarseCount, coarseColumns);
+  fine.galerkinSlots.clear();
+  for (int i = 0; i < n; ++i)
+    for (int p = P.rowStart[i]; p < P.rowStart[i + 1]; ++p)
+      for (int w = AP.rowStart[i]; w < AP.rowStart[i + 1]; ++w)
+        fine.galerkinSlots.push_back(coarse.A.find(P.column[p], AP.column[w]));
+  coarse.transposeSlots.resize(coarse.A.blockCount());
+  for (int I = 0; I < coarseCount; ++I)
+    for (int s = coarse.A.rowStart[I]; s < coarse.A.rowStart[I + 1]; ++s)
+      coarse.transposeSlots[s] = coarse.A.find(coarse.A.column[s], I);  // the pattern is symmetric
+  levels_.push_back(std::move(coarse));
+  return true;
+}
+
+void AmgHierarchy::computeDiagonal(Level& level, int threads) {
+  const BlockSparseMatrix& A = level.A;
+  level.inverseDiagonal.resize(A.blockRows);
+#pragma omp parallel for num_threads(A.threadsFor(threads)) schedule(static)
+  for (int i = 0; i < A.blockRows; ++i) {
+    const int d = A.find(i, i);
+    level.inverseDiagonal[i] = d >= 0 ? safeInverse(A.blocks[d]) : Mat3::Identity();
+  }
+}
+
+void AmgHierarchy::estimateOmega(Level& level) {
+  // rho(D^-1 A) by power iteration from a fixed, non-smooth start vector. The estimate is from
+  // below; the 1.1 margin keeps omega on the safe side of 4 / (3 rho) (Vanek et al. 1996).
+  const BlockSparseMatrix& A = level.A;
+  const Eigen::Index size = 3 * static_cast<Eigen::Index>(A.blockRows);
+  powerA_.resize(size);
+  for (Eigen::Index k = 0; k < size; ++k) powerA_[k] = 1.0 + 0.5 * static_cast<double>((k * 7919) % 13) / 13.0;
+  powerA_ /= powerA_.norm();
+  double rho = 1.0;
+  for (int iteration = 0; iteration < settings_.powerIterations; ++iteration) {
+    A.multiply(powerA_, powerB_);
+    for (int i = 0; i < A.blockRows; ++i) powerB_.segment<3>(3 * i) = level.inverseDiagonal[i] * powerB_.segment<3>(3 * i);
+    const double norm = powerB_.norm();
+    if (!(norm > 0.0) || !std::isfinite(norm)) break;
+    rho = norm;  // |D^-1 A x| with |x| = 1
+    powerA_ = powerB_ / norm;
+  }
+  level.omega = 4.0 / (3.0 * 1.1 * std::max(rho, 1e-12));
+}
+
+void AmgHierarchy::smoothProlongator(Level& level, int threads) {
+  // P = (I - omega D^-1 A) T: T puts I at (i, aggregateOf[i]). Row i of A writes row i of P only.
+  BlockSparseMatrix& P = level.P;
+  const BlockSparseMatrix& A = level.A;
+  P.setZero();
+#pragma omp parallel for num_threads(A.threadsFor(threads)) schedule(static)
+  for (int i = 0; i < A.blockRows; ++i) {
+    if (level.tentativeSlots[i] >= 0) P.blocks[level.tentativeSlots[i]] += Mat3::Identity();
+    const Mat3 scaledInverse = level.omega * level.inverseDiagonal[i];
+    for (int k = A.rowStart[i]; k < A.rowStart[i + 1]; ++k)
+      if (level.smoothingSlots[k] >= 0) P.blocks[level.smoothingSlots[k]].noalias() -= scaledInverse * A.blocks[k];
+  }
+}
+
+void AmgHierarchy::galerkinProduct(int l, int threads) {
+  Level& fine = levels_[l];
+  Level& coarse = levels_[l + 1];
+  const BlockSparseMatrix& A = fine.A;
+  const BlockSparseMatrix& P = fine.P;
+  BlockSparseMatrix& AP = fine.AP;
+  AP.setZero();
+  // Row i of A writes row i of A P only: rows in parallel, each summed in the same order.
+#pragma omp parallel for num_threads(A.threadsFor(threads)) schedule(static)
+  for (int i = 0; i < A.blockRows; ++i) {
+    const int* slot = fine.productSlots.data() + fine.productStart[i];
+    for (int k = A.rowStart[i]; k < A.rowStart[i + 1]; ++k) {
+      const int j = A.column[k];
+      for (int p = P.rowStart[j]; p < P.rowStart[j + 1]; ++p) AP.blocks[*slot++].noalias() += A.blocks[k] * P.blocks[p];
+    }
+  }
+  // P^T (A P) scatters into the coarse rows: one thread.
+  BlockSparseMatrix& Ac = coarse.A;
+  Ac.setZero();
+  const int* slot = fine.galerkinSlots.data();
+  for (int i = 0; i < A.blockRows; ++i)
+    for (int p = P.rowStart[i]; p < P.rowStart[i + 1]; ++p) {
+      const Mat3 transposed = P.blocks[p].transpose();
+      for (int w = AP.rowStart[i]; w < AP.rowStart[i + 1]; ++w) Ac.blocks[*slot++].noalias() += transposed * AP.blocks[w];
+    }
+  for (int s = 0; s < Ac.blockCount(); ++s) {
+    const int t = coarse.transposeSlots[s];
+    if (t < s) continue;
+    const Mat3 symmetric = 0.5 * (Ac.blocks[s] + Ac.blocks[t].transpose());
+    Ac.blocks[s] = symmetric;
+    Ac.blocks[t] = symmetric.transpose();
+  }
+}
+
+void AmgHierarchy::factorCoarsest() {
+  const BlockSparseMatrix& A = levels_.back().A;
+  coarsestFactored_ = false;
+  if (A.blockRows > settings_.maxDenseVertices) return;
+  const Eigen::Index size = 3 * static_cast<Eigen::Index>(A.blockRows);
+  coarsestDense_.setZero(size, size);
+  for (int i = 0; i < A.blockRows; ++i)
+    for (int k = A.rowStart[i]; k < A.rowStart[i + 1]; ++k) coarsestDense_.block<3, 3>(3 * i, 3 * A.column[k]) = A.blocks[k];
+  coarsestFactor_.compute(coarsestDense_);
+  coarsestFactored_ = coarsestFactor_.info() == Eigen::Success;
+}
+
+double AmgHierarchy::operatorComplexity() const {
+  if (levels_.empty() || levels_[0].A.blockCount() == 0) return 0.0;
+  double total = 0.0;
+  for (const Level& level : levels_) total += level.A.blockCount();
+  return total / levels_[0].A.blockCount();
+}
+
+}  // namespace weft

@@ -1,0 +1,101 @@
+#pragma once
+// A smoothed-aggregation algebraic multigrid hierarchy over 3x3 vertex blocks, after Tamstorf,
+// Jones & McCormick 2015, "Smoothed aggregation multigrid for cloth simulation", and Vanek, Mandel
+// & Brezina 1996, "Algebraic multigrid by smoothed aggregation for second and fourth order elliptic
+// problems":
+//   - strength of connection: block (i, j) is strong when |A_ij|_F >= theta sqrt(|A_ii|_F |A_jj|_F);
+//   - aggregation (Vanek et al., three passes): a vertex whose strong neighbours are all free roots
+//     an aggregate of itself and them; the rest join a neighbouring aggregate or form new ones.
+//     A vertex without strong neighbours (a pinned vertex: its row is the identity) stays out of
+//     the coarse space and is left to the smoother, which solves it exactly;
+//   - tentative prolongator T: the three translations of each aggregate (T_iJ = I when vertex i is
+//     in aggregate J). Only translations: the coarse levels keep 3x3 blocks. The rotations of
+//     Tamstorf et al.'s near-null space are not included (see docs/solver.md);
+//   - prolongator P = (I - omega D^-1 A) T, omega = 4 / (3 rho(D^-1 A)) (Vanek et al.), D the
+//     3x3 block diagonal, rho estimated by a fixed number of power iterations (deterministic) at
+//     the build and kept while the topology holds;
+//   - Galerkin coarse operator A_c = P^T A P, symmetrized (rounding would otherwise leave it
+//     slightly unsymmetric and the V-cycle with it);
+//   - coarsest level: a dense Cholesky factorization.
+//
+// Lazy setup (as in Li et al. 2025, "MGPBD"): build() does everything for a new pattern:
+// aggregates, the patterns of P, A P and A_c and the index lists that fill them. refresh() redoes
+// only the numbers for new values of the finest matrix in the same pattern: the Galerkin products
+// always, the prolongators' smoothing only when asked (they may be kept from the last build while
+// the topology holds). Nothing is allocated by refresh().
+#include <vector>
+
+#include <Eigen/Cholesky>
+#include <Eigen/Core>
+
+#include "integrate/block_sparse_matrix.h"
+
+namespace weft {
+
+struct AmgSettings {
+  double strengthThreshold = 0.02;  // theta above (dimensionless)
+  int coarsestVertices = 48;        // stop coarsening at or below this many vertices (dense solve)
+  int maxDenseVertices = 400;       // a coarsest level larger than this (coarsening stalled) is only smoothed
+  double stallRatio = 0.85;         // stop when a level would keep more than this share of the vertices
+  int maxLevels = 12;
+  int powerIterations = 8;          // for the estimate of rho(D^-1 A) of each level
+  bool resmoothProlongators = true;  // refresh() recomputes P from the new A (else P is kept from build(): measured
+                                    // 30 -> 40 CG iterations per step over 1 s of the falling 64² sheet)
+};
+
+class AmgHierarchy {
+ public:
+  struct Level {
+    BlockSparseMatrix A;                 // this level's operator
+    std::vector<Mat3> inverseDiagonal;   // (A_ii)^-1, for the smoother and the prolongator smoothing
+    // Towards the next coarser level (empty on the coarsest):
+    std::vector<int> aggregateOf;        // per vertex, its aggregate (= coarse vertex) or -1
+    BlockSparseMatrix P;                 // prolongator: rows = this level's vertices, columns = aggregates
+    BlockSparseMatrix AP;                // A P, the first half of the Galerkin product
+    std::vector<int> tentativeSlots;     // per vertex i: the slot of P(i, aggregateOf[i]) or -1
+    std::vector<int> smoothingSlots;     // per block (i, j) of A: the slot of P(i, aggregateOf[j]) or -1
+    std::vector<int> productSlots;       // per (block (i, j) of A, block (j, K) of P) in order: slot of AP(i, K)
+    std::vector<int> productStart;       // per row i of A: where its entries in productSlots start (n + 1)
+    std::vector<int> galerkinSlots;      // per (block (i, I) of P, block (i, K) of AP) in order: slot of A_c(I, K)
+    std::vector<int> transposeSlots;     // per block (I, K) of A: the slot of (K, I) (coarse levels: symmetrizing)
+    double omega = 0.0;                  // prolongator smoothing weight
+    // V-cycle scratch.
+    Eigen::VectorXd rhs, solution, residual;
+  };
+
+  explicit AmgHierarchy(const AmgSettings& settings = {}) : settings_(settings) {}
+
+  // Builds the hierarchy for `finest` (pattern and values; vertices with an identity row and no
+  // couplings are fine).
+  void build(const BlockSparseMatrix& finest);
+  // Takes the values of `finest`, which must have the pattern build() saw, and redoes the numbers.
+  // Row-wise parts over `threads` (same bits for any count).
+  void refresh(const BlockSparseMatrix& finest, int threads = 1);
+
+  int levelCount() const { return static_cast<int>(levels_.size()); }
+  const Level& level(int l) const { return levels_[l]; }
+  Level& level(int l) { return levels_[l]; }
+  // The coarsest level's factorization succeeded (else the V-cycle skips the coarse correction).
+  bool coarsestFactored() const { return coarsestFactored_; }
+  const Eigen::LLT<Eigen::MatrixXd>& coarsestFactor() const { return coarsestFactor_; }
+  // Operator complexity: stored blocks of all levels / of the finest.
+  double operatorComplexity() const;
+
+ private:
+  bool coarsen(int l);           // symbolic setup of level l -> l + 1 (aggregates, patterns, slots); false: stop here
+  void computeDiagonal(Level& level, int threads = 1);
+  void estimateOmega(Level& level);
+  void smoothProlongator(Level& level, int threads = 1);
+  void galerkinProduct(int l, int threads = 1);   // numeric: AP and A_c of level l + 1
+  void factorCoarsest();
+
+  AmgSettings settings_;
+  std::vector<Level> levels_;
+  Eigen::MatrixXd coarsestDense_;
+  Eigen::LLT<Eigen::MatrixXd> coarsestFactor_;
+  bool coarsestFactored_ = false;
+  std::vector<int> symmetricSlots_;  // scratch of galerkinProduct
+  Eigen::VectorXd powerA_, powerB_;
+};
+
+}  // namespace weft

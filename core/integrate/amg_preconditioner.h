@@ -1,0 +1,73 @@
+#pragma once
+// M^-1 = one V-cycle of the smoothed-aggregation multigrid hierarchy (amg_hierarchy.h) of the
+// system matrix's strong couplings: a preconditioner whose setup and application cost grows
+// linearly with the vertex count, unlike a sparse Cholesky factor (n^1.5 on a sheet).
+//
+// What the V-cycle approximates: like the lagged Cholesky preconditioner, the strong-coupling
+// approximation of A (strong_coupling_approximation.h: the bending hinges' wing couplings dropped
+// and made up for on the diagonal, M >= A): a 7-block stencil instead of 13 keeps the Galerkin
+// products and the sweeps cheap.
+//
+// Why PCG stays valid: the cycle is symmetric (block Gauss-Seidel forward before the coarse
+// correction, backward after it; a symmetrized Galerkin operator on every level; an exact dense
+// Cholesky solve on the coarsest), and with a convergent smoother and SPD coarse operators it is
+// positive definite. Pinned vertices have identity rows and no couplings in A (see
+// SystemMatrix::constrainVertices): they stay out of the coarse spaces and the smoother solves
+// them exactly, so the constraints are filtered as the CG's matrix filters them.
+//
+// Lazy setup: the aggregates and the patterns and index lists of every level are built when the
+// matrix pattern changes (the first solve, a tear or a cut: the whole hierarchy is rebuilt, at a
+// cost of a few steps' numeric setup, see docs/solver.md); every other solve only gathers the new
+// values and redoes the numbers (prolongator smoothing, Galerkin products, coarsest factor).
+//
+// Deterministic: a fixed order of operations; the row-wise parts use solver.threads (fixed row
+// ranges, each row computed alike), and the result does not depend on the thread count.
+#include <algorithm>
+#include <vector>
+
+#include "integrate/amg_hierarchy.h"
+#include "integrate/block_sparse_matrix.h"
+#include "integrate/preconditioner.h"
+#include "integrate/strong_coupling_approximation.h"
+
+namespace weft {
+
+class AmgPreconditioner final : public Preconditioner {
+ public:
+  struct Settings {
+    AmgSettings hierarchy;
+    int smoothingSweeps = 1;  // block Gauss-Seidel sweeps before and after each coarse correction
+  };
+
+  AmgPreconditioner() : AmgPreconditioner(Settings{}) {}
+  explicit AmgPreconditioner(const Settings& settings) : settings_(settings), hierarchy_(settings.hierarchy) {}
+
+  void prepare(const SystemMatrix& A) override;
+  void apply(const Eigen::VectorXd& inR, Eigen::VectorXd& outZ) override;
+  // The row-wise parts (products, residuals, prolongator smoothing, A P) split their rows over the
+  // threads in fixed ranges; the Gauss-Seidel sweeps and the scatters (restriction, P^T (A P)) stay
+  // on one thread. Every row is computed by the same code in the same order: the same bits.
+  void setThreads(int threads) override { threads_ = std::max(threads, 1); }
+
+  // Full (symbolic) setups so far: one per pattern.
+  int fullSetups() const { return fullSetups_; }
+  const AmgHierarchy& hierarchy() const { return hierarchy_; }
+
+ private:
+  void analyze(const SystemMatrix& A);
+  void gather(const SystemMatrix& A);
+  void cycle(int l, const Eigen::VectorXd& b, Eigen::VectorXd& x);
+
+  Settings settings_;
+  AmgHierarchy hierarchy_;
+  StrongCouplingApproximation approximation_;
+  bool dropsWeakCouplings_ = false;
+  BlockSparseMatrix finest_;
+  std::vector<int> gatherOffsets_;  // 3 per block of finest_: offset of entry (3i, 3j + c) in the source matrix
+  int analyzedPatternVersion_ = -1;
+  Eigen::Index analyzedSize_ = -1;
+  int fullSetups_ = 0;
+  int threads_ = 1;
+};
+
+}  // namespace weft
