@@ -231,6 +231,9 @@ TEST_F(EditorWindow, KeyTapsShorterThanAFrameAreNotLost) {
 
   startWeft("edit '" + scene.string() + "'", root_ / "taps.txt");
   ASSERT_TRUE(waitForWindow(30)) << readText(root_ / "taps.txt");
+  // The window exists before its first frame is drawn (the scene is still being built): a click
+  // then lands on no widget, as it would for a user, so the taps start once it has drawn.
+  std::this_thread::sleep_for(1500ms);
   pressAt(field);
   std::this_thread::sleep_for(300ms);
   display_->xdotool("type --delay 120 20");
