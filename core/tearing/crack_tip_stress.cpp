@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "tearing/golden_section.h"
 #include "tearing/vertex_fan.h"
 
 namespace weft {
@@ -126,21 +127,10 @@ TearCandidate bestTipLine(const ClothMesh& mesh, const VertexFan& fan, const std
     return a.ratio < b.ratio;
   });
   if (!(best.ratio > 0.0)) return best;
-  // Golden-section refinement between the best sample's neighbours (it only improves on it).
-  const double invPhi = (std::sqrt(5.0) - 1.0) / 2.0;
-  double lo = std::max(start, best.angle - step), hi = std::min(start + step * rays.size(), best.angle + step);
-  for (int iteration = 0; iteration < 16; ++iteration) {
-    const double a = hi - invPhi * (hi - lo), b = lo + invPhi * (hi - lo);
-    const TearCandidate left = evaluateRay(mesh, fan, triangleStress, table, weftAngleRad, strengthScale, length, a);
-    const TearCandidate right = evaluateRay(mesh, fan, triangleStress, table, weftAngleRad, strengthScale, length, b);
-    if (left.ratio > best.ratio) best = left;
-    if (right.ratio > best.ratio) best = right;
-    if (left.ratio >= right.ratio) {
-      hi = b;
-    } else {
-      lo = a;
-    }
-  }
+  const double lo = std::max(start, best.angle - step), hi = std::min(start + step * rays.size(), best.angle + step);
+  refineByGoldenSection(lo, hi, 16, [&](double angle) {
+    return evaluateRay(mesh, fan, triangleStress, table, weftAngleRad, strengthScale, length, angle);
+  }, best);
   return best;
 }
 

@@ -7,6 +7,7 @@
 #include <span>
 #include <numbers>
 
+#include "tearing/golden_section.h"
 #include "tearing/separation_strength.h"
 
 namespace weft {
@@ -64,22 +65,12 @@ TearCandidate bestDenseLine(const StressFan& fan, const TearTable& table, double
     keepIfBetter(fan, from + (fan.closed ? k : k + 0.5) * step, table, weakest, weftAngleRad, scale, best);
   }
   if (!(best.ratio > 0.0)) return best;
-  const double invPhi = (std::sqrt(5.0) - 1.0) / 2.0;
-  double lo = fan.closed ? best.angle - step : std::max(from, best.angle - step);
-  double hi = fan.closed ? best.angle + step : std::min(from + range, best.angle + step);
-  for (int iteration = 0; iteration < 20; ++iteration) {
-    const double a = hi - invPhi * (hi - lo), b = lo + invPhi * (hi - lo);
-    counts.linesEvaluated += 2;
-    const TearCandidate left = evaluateLine(a, separationStrength(fan, a), table, weftAngleRad, scale);
-    const TearCandidate right = evaluateLine(b, separationStrength(fan, b), table, weftAngleRad, scale);
-    if (left.ratio > best.ratio) best = left;
-    if (right.ratio > best.ratio) best = right;
-    if (left.ratio >= right.ratio) {
-      hi = b;
-    } else {
-      lo = a;
-    }
-  }
+  const double lo = fan.closed ? best.angle - step : std::max(from, best.angle - step);
+  const double hi = fan.closed ? best.angle + step : std::min(from + range, best.angle + step);
+  refineByGoldenSection(lo, hi, 20, [&](double angle) {
+    ++counts.linesEvaluated;
+    return evaluateLine(angle, separationStrength(fan, angle), table, weftAngleRad, scale);
+  }, best);
   return best;
 }
 
