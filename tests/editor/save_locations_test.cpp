@@ -39,6 +39,33 @@ class SaveLocationsTest : public EditorPanelsTest {
     imgui_->click(probe_.centre("material/presetname"), drawUi());
     imgui_->typeAndEnter(name, drawUi());
   }
+
+  // A copy of sword-into-sheet (8 x 8 cloth) beside the test's folder, its sword's first vertex's
+  // tag toggled in the Tools panel and Save pressed: the dialog that asks where the tags of a
+  // shipped tool go is open. Returns the vertex's tag before the toggle.
+  bool toggleATagOfTheShippedSwordAndSave() {
+    std::ifstream in(fs::path(WEFT_SOURCE_DIR) / "presets" / "scenes" / "sword-into-sheet.json");
+    json scene = json::parse(in);
+    scene["cloths"][0]["mesh"]["grid"]["resolution"] = json::array({8, 8});
+    session_ = std::make_unique<EditorSession>(dir_.write("copied/sword-copy.json", scene.dump(2)));
+    ui_.panels.tool.emplace(*session_, 0);
+    ui_.panels.toolGeneration = session_->worldGeneration();
+    const bool wasSharp = session_->world().obstacle(0).sharpVertex[kToggledVertex];
+    ui_.panels.tool->toggleVertex(*session_, kToggledVertex);
+    // The tools panel, grown and in front, so all its buttons are on screen.
+    imgui_->frame([&] {
+      ImGui::SetWindowPos("Tools", ImVec2(300, 300));
+      ImGui::SetWindowSize("Tools", ImVec2(400, 400));
+      ImGui::SetWindowFocus("Tools");
+      drawUi()();
+    });
+    imgui_->frame(drawUi());
+    imgui_->click(probe_.centre("tools/save"), drawUi());
+    imgui_->frame(drawUi());
+    return wasSharp;
+  }
+  static constexpr int kToggledVertex = 0;
+  const fs::path shippedSwordTags_ = fs::path(WEFT_SOURCE_DIR) / "assets" / "tools" / "sword.sharp.json";
 };
 
 TEST_F(SaveLocationsTest, APresetGoesToTheChosenFolderWhichIsCreatedAndRemembered) {
@@ -82,29 +109,10 @@ TEST_F(SaveLocationsTest, WritingIntoTheInstalledPresetsNeedsTheUsersSayWithAWar
 }
 
 TEST_F(SaveLocationsTest, AShippedToolsTagsAreSavedBesideTheSceneUnlessTheUserSaysOtherwise) {
-  std::ifstream in(fs::path(WEFT_SOURCE_DIR) / "presets" / "scenes" / "sword-into-sheet.json");
-  json scene = json::parse(in);
-  scene["cloths"][0]["mesh"]["grid"]["resolution"] = json::array({8, 8});
-  const fs::path copied = dir_.write("copied/sword-copy.json", scene.dump(2));
-  session_ = std::make_unique<EditorSession>(copied);
-  const fs::path shipped = fs::path(WEFT_SOURCE_DIR) / "assets" / "tools" / "sword.sharp.json";
+  const fs::path& shipped = shippedSwordTags_;
   const std::string shippedBefore = readText(shipped);
-
-  ui_.panels.tool.emplace(*session_, 0);
-  ui_.panels.toolGeneration = session_->worldGeneration();
-  const int vertex = 0;
-  const bool wasSharp = session_->world().obstacle(0).sharpVertex[vertex];
-  ui_.panels.tool->toggleVertex(*session_, vertex);
-  // The tools panel, grown and in front, so all its buttons are on screen.
-  imgui_->frame([&] {
-    ImGui::SetWindowPos("Tools", ImVec2(300, 300));
-    ImGui::SetWindowSize("Tools", ImVec2(400, 400));
-    ImGui::SetWindowFocus("Tools");
-    drawUi()();
-  });
-  imgui_->frame(drawUi());
-  imgui_->click(probe_.centre("tools/save"), drawUi());
-  imgui_->frame(drawUi());
+  const int vertex = kToggledVertex;
+  const bool wasSharp = toggleATagOfTheShippedSwordAndSave();
   ASSERT_TRUE(probe_.rects.count("tools/savebesidescene")) << "saving a shipped tool's tags asks where";
   EXPECT_EQ(readText(shipped), shippedBefore) << "nothing written before the user chose";
   imgui_->click(probe_.centre("tools/savebesidescene"), drawUi());
@@ -121,28 +129,10 @@ TEST_F(SaveLocationsTest, AShippedToolsTagsAreSavedBesideTheSceneUnlessTheUserSa
 // into assets/; the scene's obstacle holds "sharp_tags": {...} and, saved and opened again, the
 // world reads the tags from it.
 TEST_F(SaveLocationsTest, AToolsTagsCanLiveInTheSceneItself) {
-  std::ifstream in(fs::path(WEFT_SOURCE_DIR) / "presets" / "scenes" / "sword-into-sheet.json");
-  json scene = json::parse(in);
-  scene["cloths"][0]["mesh"]["grid"]["resolution"] = json::array({8, 8});
-  const fs::path copied = dir_.write("copied/sword-copy.json", scene.dump(2));
-  session_ = std::make_unique<EditorSession>(copied);
-  const fs::path shipped = fs::path(WEFT_SOURCE_DIR) / "assets" / "tools" / "sword.sharp.json";
+  const fs::path& shipped = shippedSwordTags_;
   const std::string shippedBefore = readText(shipped);
-
-  ui_.panels.tool.emplace(*session_, 0);
-  ui_.panels.toolGeneration = session_->worldGeneration();
-  const int vertex = 0;
-  const bool wasSharp = session_->world().obstacle(0).sharpVertex[vertex];
-  ui_.panels.tool->toggleVertex(*session_, vertex);
-  imgui_->frame([&] {
-    ImGui::SetWindowPos("Tools", ImVec2(300, 300));
-    ImGui::SetWindowSize("Tools", ImVec2(400, 400));
-    ImGui::SetWindowFocus("Tools");
-    drawUi()();
-  });
-  imgui_->frame(drawUi());
-  imgui_->click(probe_.centre("tools/save"), drawUi());
-  imgui_->frame(drawUi());
+  const int vertex = kToggledVertex;
+  const bool wasSharp = toggleATagOfTheShippedSwordAndSave();
   ASSERT_TRUE(probe_.rects.count("tools/saveinscene")) << "the dialog offers the scene itself";
   imgui_->click(probe_.centre("tools/saveinscene"), drawUi());
 
@@ -156,7 +146,7 @@ TEST_F(SaveLocationsTest, AToolsTagsCanLiveInTheSceneItself) {
   EXPECT_TRUE(session_->dirty()) << "the tags are a scene edit, saved with the scene";
 
   session_->save();
-  EditorSession reopened(copied);
+  EditorSession reopened(dir_.path() / "copied" / "sword-copy.json");
   EXPECT_NE(reopened.world().obstacle(0).sharpVertex[vertex], wasSharp) << "read from the scene";
   const ToolTagEditor again(reopened, 0);
   EXPECT_TRUE(again.inScene()) << "its next save goes to the scene again";

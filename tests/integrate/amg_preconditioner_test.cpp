@@ -17,6 +17,7 @@
 #include "sim/cloth.h"
 #include "sim/world.h"
 #include "support/tear_scenes.h"
+#include "support/random_vector.h"
 #include "support/test_scenes.h"
 
 namespace weft {
@@ -75,13 +76,7 @@ Eigen::VectorXd directSolve(const SystemMatrix& A, const Eigen::VectorXd& b) {
   return x;
 }
 
-Eigen::VectorXd randomVector(Eigen::Index size, unsigned seed) {
-  std::mt19937 random(seed);
-  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
-  Eigen::VectorXd v(size);
-  for (Eigen::Index k = 0; k < size; ++k) v[k] = uniform(random);
-  return v;
-}
+using test::randomVector;
 
 int iterationsToTolerance(const ClothSystem& system, Preconditioner& preconditioner, double tolerance) {
   PreconditionedConjugateGradient cg(tolerance, 20000);

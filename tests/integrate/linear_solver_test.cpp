@@ -12,6 +12,7 @@
 #include "integrate/preconditioned_cg.h"
 #include "integrate/strong_coupling_approximation.h"
 #include "sim/world.h"
+#include "support/random_vector.h"
 #include "support/test_scenes.h"
 
 namespace weft {
@@ -76,13 +77,7 @@ SystemMatrix patternOf(const GridPattern& g) {
   return A;
 }
 
-Eigen::VectorXd randomVector(Eigen::Index size, unsigned seed) {
-  std::mt19937 random(seed);
-  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
-  Eigen::VectorXd v(size);
-  for (Eigen::Index k = 0; k < size; ++k) v[k] = uniform(random);
-  return v;
-}
+using test::randomVector;
 
 Eigen::VectorXd denseSolve(const SystemMatrix& A, const Eigen::VectorXd& b) {
   const Eigen::MatrixXd dense(A.matrix());
