@@ -89,6 +89,8 @@ struct Result {
 std::string sceneIntegratorName(const std::string& shortName) {
   if (shortName == "lbe") return "linearized_backward_euler";
   if (shortName == "newton") return "newton";
+  if (shortName == "bdf2") return "bdf2";
+  if (shortName == "bdf2n") return "bdf2_newton";
   return "symplectic_euler";
 }
 
@@ -300,12 +302,13 @@ Command addBenchCommand(CLI::App& app) {
       ->delimiter(',')
       ->check(CLI::Range(2, 4096))
       ->capture_default_str();
-  cli->add_option("--integrators", options->integrators, "Any of lbe, newton, symplectic, comma-separated")
+  cli->add_option("--integrators", options->integrators,
+                  "Any of lbe, newton, symplectic, bdf2, bdf2n (BDF2 solved by Newton), comma-separated")
       ->delimiter(',')
-      ->check(CLI::IsMember({"lbe", "newton", "symplectic"}))
+      ->check(CLI::IsMember({"lbe", "newton", "symplectic", "bdf2", "bdf2n"}))
       ->capture_default_str();
   cli->add_option("--solvers", options->solvers,
-                  "Linear solvers for lbe and newton: cg (lagged Cholesky), amg (CG with multigrid), cholmod, "
+                  "Linear solvers for the implicit integrators: cg (lagged Cholesky), amg (CG with multigrid), cholmod, "
                   "comma-separated")
       ->delimiter(',')
       ->check(CLI::IsMember({"cg", "amg", "cholmod"}))

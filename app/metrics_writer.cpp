@@ -10,6 +10,8 @@ std::string integratorName(IntegratorKind kind) {
     case IntegratorKind::LinearizedBackwardEuler: return "linearized_backward_euler";
     case IntegratorKind::Newton: return "newton";
     case IntegratorKind::SymplecticEuler: return "symplectic_euler";
+    case IntegratorKind::Bdf2: return "bdf2";
+    case IntegratorKind::Bdf2Newton: return "bdf2_newton";
   }
   return "unknown";
 }
@@ -88,6 +90,7 @@ nlohmann::ordered_json runMetrics(const World& world, double wallSeconds) {
       {"newton_iterations", stats.newtonIterations},
       {"last_newton_residual", stats.lastNewtonResidual},
       {"linear_solve_failures", stats.linearSolveFailures},
+      {"bdf2_restarts", stats.bdf2Restarts},
   };
   if (world.contactRuns()) {
     const ContactStats& c = world.contactStats();

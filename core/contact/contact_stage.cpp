@@ -40,8 +40,10 @@ ContactStage::ContactStage(const Scene& scene) : spec_(scene.contact), ground_(s
   obstacleCache_.add(obstaclePairing_, holdReach());
   clothCache_ = PairCache(kSkinPerThickness * spec_.thickness);
   clothCache_.add(clothPairing_, spec_.thickness);
+  // BDF2 (linearized) takes a backward Euler step while vertices are held (integrate/bdf2.h).
   holdsVertices_ = (!obstaclePairing_.empty() || ground_.enabled) &&
-                   scene.solver.integrator == IntegratorKind::LinearizedBackwardEuler;
+                   (scene.solver.integrator == IntegratorKind::LinearizedBackwardEuler ||
+                    scene.solver.integrator == IntegratorKind::Bdf2);
   bodies_.resize(static_cast<std::size_t>(clothCount + obstacleCount));
   clothTopology_.resize(static_cast<std::size_t>(clothCount));
   clothRest_.resize(static_cast<std::size_t>(clothCount));

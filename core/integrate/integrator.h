@@ -6,6 +6,9 @@
 //  - Newton: backward Euler solved to a tolerance by Newton's method on the incremental potential,
 //    with a backtracking line search. The accurate option.
 //  - SymplecticEuler: v += h M^-1 f(x), x += h v. The explicit baseline (needs small steps).
+//  - Bdf2Integrator (bdf2.h): the second-order BDF2 step, solved by either of the first two (both
+//    solve the general implicit step of implicit_step.h), with one backward Euler step wherever
+//    its two-step history is invalid.
 #include <memory>
 #include <vector>
 
@@ -17,6 +20,7 @@
 namespace weft {
 
 struct Cloth;
+struct ImplicitStep;
 struct SolverStats;
 
 // A cloth vertex resting on an obstacle or the ground (contact/held_contacts.h), held in this
@@ -47,11 +51,15 @@ struct StepInputs {
   DampingSpec damping;
   bool bending = true;
   int threads = 1;
-  // Linearized backward Euler only (the other integrators leave contact to the impulses).
+  // Linearized backward Euler only, and BDF2 linearized, which then takes a backward Euler step
+  // (bdf2.h); the other integrators leave contact to the impulses.
   std::vector<HeldVertex>* heldVertices = nullptr;
   // The editor's grab on this cloth (forces/grab_spring.h); null: nothing grabbed. Part of the
   // implicit solve (force and Jacobian) in the implicit integrators.
   const GrabSpring* grab = nullptr;
+  // The implicit integrators' step form (implicit_step.h); null: backward Euler from the cloth's
+  // state. Set by Bdf2Integrator.
+  const ImplicitStep* form = nullptr;
 };
 
 class Integrator {

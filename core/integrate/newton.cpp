@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "integrate/implicit_step.h"
 #include "sim/cloth.h"
 #include "sim/world.h"
 
@@ -14,7 +15,7 @@ double NewtonIntegrator::potential(const Cloth& cloth, const std::vector<Vec3>& 
   options.threads = in.threads;
   const ElasticSummary elastic =
       evaluateElasticForces(cloth, x, options, system_.elastic, system_.internalForce, nullptr, profile);
-  const double h = in.dt;
+  const double h = in.form != nullptr ? in.form->h : in.dt;  // h^ of a BDF2 form (implicit_step.h)
   double inertia = 0.0, external = 0.0, damping = 0.0;
   const double grab = in.grab != nullptr ? grabEnergy(*in.grab, x[in.grab->vertex]) : 0.0;
   for (size_t i = 0; i < x.size(); ++i) {
@@ -34,12 +35,16 @@ double NewtonIntegrator::potential(const Cloth& cloth, const std::vector<Vec3>& 
 void NewtonIntegrator::advance(Cloth& cloth, const StepInputs& in, StageProfile& profile, SolverStats& stats) {
   ClothMesh& mesh = cloth.mesh;
   const int n = mesh.vertexCount();
-  const double h = in.dt;
+  // The step's form (implicit_step.h): backward Euler from the cloth's state unless BDF2 hands
+  // one; then h is h^ = 2dt/3 and (x0, v0) the extrapolated base state (x^, v^).
+  const ImplicitStep* form = in.form;
+  const double h = form != nullptr ? form->h : in.dt;
+  const std::vector<Vec3>& v0 = form != nullptr ? form->v : mesh.v;
   system_.beginStep(cloth, in, profile);
 
-  x0_ = mesh.x;
+  x0_ = form != nullptr ? form->x : mesh.x;
   inertialTarget_.resize(n);
-  for (int i = 0; i < n; ++i) inertialTarget_[i] = mesh.x[i] + h * mesh.v[i];
+  for (int i = 0; i < n; ++i) inertialTarget_[i] = x0_[i] + h * v0[i];
   std::vector<Vec3>& x = current_;
   x = inertialTarget_;  // start from the inertial prediction
   for (size_t k = 0; k < system_.pinnedVertices.size(); ++k) x[system_.pinnedVertices[k]] = system_.pinnedTargets[k];

@@ -9,6 +9,8 @@ namespace weft {
 // whose stationary point is M (v+ - v0)/h = f_int(x+) + f_ext - D v+ with v+ = (x - x0)/h and
 // the damping matrix D = c_m M + beta H(x0). Each iteration solves with the definite Hessian and
 // backtracks along the step until Phi decreases enough (Armijo), so it converges from any start.
+// Given a BDF2 form (implicit_step.h), x0, v0 and h are its x^, v^ and h^: the same potential,
+// minimized for the BDF2 step.
 class NewtonIntegrator final : public Integrator {
  public:
   explicit NewtonIntegrator(const SolverSpec& spec)

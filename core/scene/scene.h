@@ -113,7 +113,9 @@ struct ForcesSpec {
   friend bool operator==(const ForcesSpec&, const ForcesSpec&) = default;
 };
 
-enum class IntegratorKind { LinearizedBackwardEuler, Newton, SymplecticEuler };
+// Bdf2 and Bdf2Newton: the second-order BDF2 step solved like LinearizedBackwardEuler (one
+// linear solve) and like Newton (to a tolerance); integrate/bdf2.h.
+enum class IntegratorKind { LinearizedBackwardEuler, Newton, SymplecticEuler, Bdf2, Bdf2Newton };
 enum class LinearSolverKind { ConjugateGradient, Cholmod };
 enum class PreconditionerKind { BlockJacobi, LaggedCholesky, LaggedExactCholesky, Amg };
 
@@ -121,8 +123,8 @@ struct SolverSpec {
   double dt = 1.0 / 60.0;         // time step (s)
   int substeps = 1;               // each step is split into this many equal substeps
   IntegratorKind integrator = IntegratorKind::LinearizedBackwardEuler;
-  int newtonMaxIterations = 10;   // Newton: iteration bound per (sub)step
-  double newtonTolerance = 1e-6;  // Newton: stop when the max velocity change of an iteration is below this (m/s)
+  int newtonMaxIterations = 10;   // Newton and Bdf2Newton: iteration bound per (sub)step
+  double newtonTolerance = 1e-6;  // Newton and Bdf2Newton: stop when the max velocity change of an iteration is below this (m/s)
   LinearSolverKind linearSolver = LinearSolverKind::ConjugateGradient;
   PreconditionerKind linearPreconditioner = PreconditionerKind::LaggedCholesky;  // CG: see integrate/linear_solver.h
   double linearTolerance = 1e-6;  // CG: stop at |r| <= tolerance * max(|b|, |one step's external impulse| in b's units)

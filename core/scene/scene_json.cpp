@@ -320,8 +320,10 @@ IntegratorKind parseIntegrator(const FieldReader& r) {
   if (name == "linearized_backward_euler") return IntegratorKind::LinearizedBackwardEuler;
   if (name == "newton") return IntegratorKind::Newton;
   if (name == "symplectic_euler") return IntegratorKind::SymplecticEuler;
-  r.fail(r.pointer("integrator"),
-         "unknown integrator \"" + echo(name) + "\"; expected linearized_backward_euler, newton or symplectic_euler");
+  if (name == "bdf2") return IntegratorKind::Bdf2;
+  if (name == "bdf2_newton") return IntegratorKind::Bdf2Newton;
+  r.fail(r.pointer("integrator"), "unknown integrator \"" + echo(name) +
+                                      "\"; expected linearized_backward_euler, newton, symplectic_euler, bdf2 or bdf2_newton");
 }
 
 PreconditionerKind parsePreconditioner(const FieldReader& r) {

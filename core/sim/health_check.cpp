@@ -149,7 +149,8 @@ bool HealthCheck::afterStep(const World& world) {
     return false;
   }
 
-  const bool newton = world.scene().solver.integrator == IntegratorKind::Newton;
+  const IntegratorKind integrator = world.scene().solver.integrator;
+  const bool newton = integrator == IntegratorKind::Newton || integrator == IntegratorKind::Bdf2Newton;
   unconvergedRun_ = newton && !(stats.lastNewtonResidual <= newtonLimit_) ? unconvergedRun_ + 1 : 0;
   if (unconvergedRun_ >= kUnconvergedNewtonSteps) {
     fail(world, {0, 0.0, "newton", "newton", stats.lastNewtonResidual, newtonLimit_,

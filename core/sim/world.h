@@ -32,6 +32,9 @@ struct SolverStats {
   long long newtonIterations = 0;   // total Newton iterations since the start
   double lastNewtonResidual = 0.0;  // last Newton step's final max velocity change (m/s)
   long long linearSolveFailures = 0;  // solves that hit their iteration bound or failed to factor
+  // BDF2 (integrate/bdf2.h): cloth steps taken as one backward Euler step because the two-step
+  // history was invalid (the first step, a tear or edit, a contact response, held contacts, a new dt).
+  long long bdf2Restarts = 0;
 };
 
 struct WorldMetrics {

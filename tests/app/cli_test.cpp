@@ -128,7 +128,8 @@ TEST_F(WeftCli, RunWritesMetricsWithEveryDocumentedKey) {
     EXPECT_TRUE(m.contains(key)) << "metrics.json lacks " << key;
   }
   for (const char* key : {"integrator", "linear_solver", "preconditioner", "linear_iterations", "last_linear_residual",
-                          "max_linear_residual", "newton_iterations", "last_newton_residual", "linear_solve_failures"}) {
+                          "max_linear_residual", "newton_iterations", "last_newton_residual", "linear_solve_failures",
+                          "bdf2_restarts"}) {
     EXPECT_TRUE(m["solver"].contains(key)) << "metrics.json lacks solver." << key;
   }
   EXPECT_EQ(m["scene"], "hanging-sheet");
@@ -423,6 +424,26 @@ TEST_F(WeftCli, AccuracyStudyReportsErrorsThatShrinkWithEachKnob) {
   EXPECT_LT(errors["cg_tolerance/linearized_backward_euler"].back(), errors["cg_tolerance/linearized_backward_euler"].front());
   EXPECT_LT(errors["time_step/newton"].back(), errors["time_step/newton"].front());
   EXPECT_LT(errors["time_step/linearized_backward_euler"].back(), errors["time_step/linearized_backward_euler"].front());
+  // BDF2 has rows too, and is far more accurate than backward Euler at the same step.
+  ASSERT_EQ(errors["time_step/bdf2"].size(), 4u);
+  ASSERT_EQ(errors["time_step/bdf2_newton"].size(), 4u);
+  EXPECT_LT(errors["time_step/bdf2"].back(), errors["time_step/bdf2"].front());
+  EXPECT_LT(errors["time_step/bdf2"].back(), errors["time_step/linearized_backward_euler"].back());
+  EXPECT_LT(errors["time_step/bdf2_newton"].back(), errors["time_step/newton"].back());
+}
+
+// BDF2 through `weft run` on a tearing scene: it tears, stays finite, and restarts its history
+// (one backward Euler step) after the steps that tore.
+TEST_F(WeftCli, RunTearsASheetWithBdf2) {
+  const Result r = weft("run " + quoted(kPresetScenes / "sheet-pulled-apart.json") +
+                        " --set solver.integrator=bdf2 --set 'cloths.0.mesh.grid.resolution=[16,16]' --out torn --quiet");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  const json m = readJson(work() / "torn" / "metrics.json");
+  EXPECT_EQ(m["finite"], true);
+  EXPECT_EQ(m["solver"]["integrator"], "bdf2");
+  EXPECT_GT(m["tears"].get<long long>(), 0);
+  EXPECT_GT(m["solver"]["bdf2_restarts"].get<long long>(), 1);
+  EXPECT_LT(m["solver"]["bdf2_restarts"].get<long long>(), m["steps"].get<long long>() / 2);
 }
 
 }  // namespace

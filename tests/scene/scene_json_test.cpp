@@ -7,6 +7,7 @@
 #include <fstream>
 #include <random>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -138,6 +139,19 @@ TEST(SceneJson, OverridesChangeTheNamedValue) {
   // Untouched values stay as they were.
   EXPECT_EQ(scene.output.frames, base.output.frames);
   EXPECT_EQ(scene.solver.integrator, base.solver.integrator);
+}
+
+TEST(SceneJson, EveryIntegratorIsReadByName) {
+  const std::pair<const char*, IntegratorKind> names[] = {
+      {"linearized_backward_euler", IntegratorKind::LinearizedBackwardEuler},
+      {"newton", IntegratorKind::Newton},
+      {"symplectic_euler", IntegratorKind::SymplecticEuler},
+      {"bdf2", IntegratorKind::Bdf2},
+      {"bdf2_newton", IntegratorKind::Bdf2Newton}};
+  for (const auto& [name, kind] : names) {
+    const Scene scene = loadScene(kPresetScenes / "hanging-sheet.json", {std::string("solver.integrator=") + name});
+    EXPECT_EQ(scene.solver.integrator, kind) << name;
+  }
 }
 
 TEST(SceneJson, OverridesCanAddAKeyTheFileLeavesOut) {

@@ -15,6 +15,8 @@ const char* integratorName(IntegratorKind kind) {
     case IntegratorKind::LinearizedBackwardEuler: return "linearized_backward_euler";
     case IntegratorKind::Newton: return "newton";
     case IntegratorKind::SymplecticEuler: return "symplectic_euler";
+    case IntegratorKind::Bdf2: return "bdf2";
+    case IntegratorKind::Bdf2Newton: return "bdf2_newton";
   }
   return "";
 }
@@ -39,7 +41,7 @@ void drawSolverPanel(EditorSession& session, PanelState& state) {
   }
   recordWidget(state, "solver/substeps");
   showRefusal(session, "substeps");
-  const char* integrators[] = {"linearized_backward_euler", "newton", "symplectic_euler"};
+  const char* integrators[] = {"linearized_backward_euler", "newton", "symplectic_euler", "bdf2", "bdf2_newton"};
   const char* current = integratorName(solver.integrator);
   ImGui::SetNextItemWidth(220);
   if (ImGui::BeginCombo("integrator", current)) {
@@ -79,7 +81,7 @@ void drawSolverPanel(EditorSession& session, PanelState& state) {
   const SolverStats& stats = shown->solver;
   ImGui::Text("linear iterations per step %.1f, last residual %.2g", stats.linearIterations / steps,
               stats.lastLinearResidual);
-  if (solver.integrator == IntegratorKind::Newton) {
+  if (solver.integrator == IntegratorKind::Newton || solver.integrator == IntegratorKind::Bdf2Newton) {
     ImGui::Text("Newton iterations per step %.1f, last residual %.2g m/s", stats.newtonIterations / steps,
                 stats.lastNewtonResidual);
   }
