@@ -11,12 +11,12 @@
 // `--set`. Overrides that would name a file outside the search folders are skipped
 // (search_paths_guard.h).
 //
-// Work bound: a World is built in well under a millisecond per hundred vertices under the
-// sanitizers, so a scene validation accepts at its limits (a million cloth vertices, a box of 256
-// x 256 cells a face) takes seconds to minutes a unit. Inputs asking for more than kMaxFuzzedVertices
-// cloth vertices or kMaxFuzzedTriangles obstacle triangles are skipped to keep the campaign at
-// hundreds of units a second; the limits themselves are tested by tests/scene (the refusals) and
-// by the hand checks of issue 19 (the largest accepted scene built in full).
+// Work bound: under the sanitizers a unit on a shipped scene (about a thousand cloth vertices)
+// takes about 15 ms, so one at validation's limits (a million cloth vertices, a box of 256 x 256
+// cells a face; 8 s and 0.9 GB in the release build) would take minutes. Inputs asking for more
+// than kMaxFuzzedVertices cloth vertices or kMaxFuzzedTriangles obstacle triangles are skipped to
+// keep the campaign at tens of units a second; the limits themselves are tested by tests/scene
+// (the refusals) and were built in full by hand (README, "Keep it fixed").
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
