@@ -6,8 +6,8 @@
 //
 // The scene is read as if it were presets/scenes/fuzz.json, so presets and assets resolve against
 // the repository's presets/ and assets/ only (defaultSearchPaths, WEFT_DATA_DIR unset). An input
-// naming an absolute path or one with ".." could reach any file on the machine (a FIFO, /dev/zero):
-// such inputs are rejected before the reader sees them, which keeps them out of the corpus.
+// naming an absolute path or one with ".." could reach any file on the machine: such inputs are
+// skipped (search_paths_guard.h).
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
@@ -16,26 +16,9 @@
 #include <nlohmann/json.hpp>
 
 #include "scene/scene_json.h"
+#include "search_paths_guard.h"
 #include "util/input_error.h"
 #include "util/json_text.h"
-
-namespace {
-
-// True when some string in `j` could name a file outside the search folders.
-bool leavesSearchPaths(const nlohmann::json& j) {
-  if (j.is_string()) {
-    const std::string& s = j.get_ref<const std::string&>();
-    return (!s.empty() && s.front() == '/') || s.find("..") != std::string::npos;
-  }
-  if (j.is_structured()) {
-    for (const auto& child : j) {
-      if (leavesSearchPaths(child)) return true;
-    }
-  }
-  return false;
-}
-
-}  // namespace
 
 extern "C" int LLVMFuzzerInitialize(int*, char***) {
   unsetenv("WEFT_DATA_DIR");
@@ -49,7 +32,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::string_view text(reinterpret_cast<const char*>(data), size);
   try {
     const nlohmann::json j = weft::parseJsonText(text, file.string(), weft::JsonTextOptions{.allowComments = true});
-    if (leavesSearchPaths(j)) return -1;
+    if (weft::fuzz::leavesSearchPaths(j)) return -1;
     const weft::Scene scene = weft::parseScene(j, file, paths);
     if (scene.cloths.empty()) std::abort();
     for (const weft::ClothSpec& cloth : scene.cloths) {

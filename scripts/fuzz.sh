@@ -7,7 +7,7 @@
 #   scripts/fuzz.sh                 the campaign: 1,000,000 executions per target
 #   scripts/fuzz.sh --seconds 10    a bounded run per target (CI)
 #   scripts/fuzz.sh ... TARGET...   only the named targets (json_text scene material_preset
-#                                   tear_table obj_cloth sharp_tags)
+#                                   tear_table obj_cloth closed_obj sharp_tags scene_overrides)
 # The corpus each run grows is kept in build-fuzz/corpus/TARGET and reused by the next run.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -19,7 +19,9 @@ if [ "${1:-}" = "--seconds" ]; then
   shift 2
 fi
 targets=("$@")
-if [ ${#targets[@]} -eq 0 ]; then targets=(json_text scene material_preset tear_table obj_cloth sharp_tags); fi
+if [ ${#targets[@]} -eq 0 ]; then
+  targets=(json_text scene material_preset tear_table obj_cloth closed_obj sharp_tags scene_overrides)
+fi
 
 CC=clang CXX=clang++ cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DWEFT_FUZZ=ON \
   -DWEFT_BUILD_TESTS=OFF > /dev/null
@@ -41,7 +43,25 @@ make_seeds() {
         sed -E '0,/"name": *"[^"]*"/s//"name": "fuzz"/' "$f" > "$dir/$(basename "$f")"
       done ;;
     obj_cloth) cp assets/meshes/*.obj fuzz/seeds/obj_cloth/*.obj "$dir/" ;;
+    closed_obj) cp assets/tools/*.obj fuzz/seeds/closed_obj/*.obj "$dir/" ;;
     sharp_tags) cp assets/tools/*.sharp.json fuzz/seeds/sharp_tags/*.json "$dir/" ;;
+    scene_overrides)
+      # Each shipped scene as it is (its name alone), and the hand-made overrides.
+      for f in presets/scenes/*.json; do basename "$f" .json > "$dir/$(basename "$f" .json).txt"; done
+      cp fuzz/seeds/scene_overrides/*.txt "$dir/" ;;
+  esac
+}
+
+# A dictionary of the words a target's input is made of, where mutating bytes alone would take
+# long to spell them: for the overrides, every key of the shipped scenes (a PATH is keys joined by
+# dots) and the shape and motion names.
+make_dictionary() {
+  local dict="build-fuzz/seeds/$1.dict"
+  case "$1" in
+    scene_overrides)
+      grep -ohE '"[A-Za-z_]+" *:' presets/scenes/*.json | sed -E 's/^"([A-Za-z_]+)".*/"\1"/' | sort -u > "$dict"
+      printf '"%s"\n' sphere box capsule cylinder mesh static kinematic dynamic . = '[' ']' '{' '}' >> "$dict"
+      echo "$dict" ;;
   esac
 }
 
@@ -50,8 +70,11 @@ make_seeds() {
 # are 10-21 KB of repeated `v`, `vt` and `f` lines and are cut to their first 8 KB (the small
 # seeds in fuzz/seeds/ are whole meshes). Longer inputs reach no code a shorter one does not (the
 # readers are linear in the input) and only slow the campaign down.
+# Tools (closed OBJs) are 11-43 KB and cut to 8 KB like the cloths; the small closed solids in
+# fuzz/seeds/closed_obj/ are whole. An override line is under 100 bytes; 1 KB holds 16 of them or
+# a whole obstacle written as one value.
 declare -A max_len=([json_text]=4096 [scene]=4096 [material_preset]=4096 [tear_table]=4096 [obj_cloth]=8192
-                    [sharp_tags]=4096)
+                    [closed_obj]=8192 [sharp_tags]=4096 [scene_overrides]=1024)
 # A unit slower than this many seconds (wall clock) is a finding: a hang. The slowest legitimate
 # input is a scene pinning a 1024 x 1024 grid (built to check the pins): 4 s of CPU under the
 # sanitizers, half a minute of wall time on a loaded machine.
@@ -63,13 +86,16 @@ export ASAN_OPTIONS="${ASAN_OPTIONS:-malloc_context_size=0}"
 failed=0
 for target in "${targets[@]}"; do
   make_seeds "$target"
+  dict_option=()
+  dict=$(make_dictionary "$target")
+  if [ -n "$dict" ]; then dict_option=(-dict="${dict#build-fuzz/}"); fi
   corpus="build-fuzz/corpus/$target"
   mkdir -p "$corpus"
   log="build-fuzz/fuzz_$target.log"
   status=0
   start=$(date +%s)
   (cd build-fuzz && exec "./fuzz/fuzz_$target" "${limit[@]}" -max_len="${max_len[$target]}" -timeout="$timeout" \
-     -print_final_stats=1 "corpus/$target" "seeds/$target") > "$log" 2>&1 &
+     "${dict_option[@]}" -print_final_stats=1 "corpus/$target" "seeds/$target") > "$log" 2>&1 &
   pid=$!
   wait "$pid" || status=$?
   rm -rf "/dev/shm/weft_fuzz_$pid" "${TMPDIR:-/tmp}/weft_fuzz_$pid"  # the targets' scratch files (fuzz/fuzz_file.h)

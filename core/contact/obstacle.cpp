@@ -6,6 +6,7 @@
 #include "rigid/mass_properties.h"
 #include "rigid/shape_meshes.h"
 #include "rigid/sharp_tags.h"
+#include "scene/shape_size.h"
 #include "util/input_error.h"
 
 namespace weft {
@@ -28,9 +29,9 @@ TriangleMesh makeShapeMesh(const ShapeSpec& shape) {
       cylinder.radius = shape.radius;
       cylinder.halfHeight = shape.halfLength;
       cylinder.segments = shape.segments;
-      // Bands about as tall as the segments are wide, so the sides are not slivers.
-      const double segmentWidth = 2.0 * kPi * shape.radius / shape.segments;
-      cylinder.heightSegments = std::max(1, static_cast<int>(2.0 * shape.halfLength / segmentWidth));
+      // Bands about as tall as the segments are wide, so the sides are not slivers (validation
+      // bounded their number: scene/shape_size.h).
+      cylinder.heightSegments = cylinderBands(shape);
       return makeCylinderMesh(cylinder);
     }
     case ShapeKind::Mesh: {

@@ -13,6 +13,7 @@
 #include "rigid/closed_surface_check.h"
 #include "rigid/mass_properties.h"
 #include "util/input_error.h"
+#include "util/json_fields.h"
 #include "util/obj_faces.h"
 #include "util/obj_text.h"
 
@@ -27,6 +28,28 @@ std::string readText(const std::filesystem::path& path) {
   std::ostringstream text;
   text << in.rdbuf();
   return text.str();
+}
+
+// Every coordinate within ±kMaxToolCoordinate and the mesh at least kMinToolExtent across (in
+// the file's units), so its areas, volume and inertia are finite and not flushed to zero.
+void requireToolSize(const TriangleMesh& mesh, const std::string& file) {
+  if (mesh.vertices.empty()) return;  // "has no faces" says more
+  Vec3 low = mesh.vertices.front(), high = low;
+  for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
+    const Vec3& p = mesh.vertices[v];
+    if (p.cwiseAbs().maxCoeff() > kMaxToolCoordinate) {
+      throw InputError(file, "", "`v` line " + std::to_string(v) + " has a coordinate of " +
+                                     formatNumber(p.cwiseAbs().maxCoeff()) + "; at most " +
+                                     formatNumber(kMaxToolCoordinate) + " in magnitude (set the scene's scale instead)");
+    }
+    low = low.cwiseMin(p);
+    high = high.cwiseMax(p);
+  }
+  const double extent = (high - low).maxCoeff();
+  if (extent < kMinToolExtent) {
+    throw InputError(file, "", "spans " + formatNumber(extent) + " along its longest axis; at least " +
+                                   formatNumber(kMinToolExtent) + " (set the scene's scale instead)");
+  }
 }
 
 }  // namespace
@@ -60,6 +83,7 @@ TriangleMesh loadClosedObj(const std::filesystem::path& path) {
     mesh.vertices.push_back(position);
   }
   const int vertexCount = static_cast<int>(mesh.vertices.size());
+  requireToolSize(mesh, file);
 
   forEachObjFace(
       reader, vertexCount,

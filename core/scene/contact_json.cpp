@@ -1,6 +1,7 @@
 #include "scene/contact_json.h"
 
 #include "scene/scene_limits.h"
+#include "scene/shape_size.h"
 #include "util/echo.h"
 
 #include <filesystem>
@@ -43,6 +44,17 @@ ShapeSpec parseShape(const json& j, const std::string& pointer, const SceneReadC
     shape.halfLength = r.numberValue(r.required("half_length", "half the length along body y (m)"),
                                      r.pointer("half_length"), limits::kShapeSize, "half the length");
     shape.segments = r.integer("segments", shape.segments, 3, limits::kMaxShapeSegments);
+    if (const std::int64_t triangles = shapeTriangleCount(shape); triangles > limits::kMaxShapeTriangles) {
+      const std::string bands =
+          shape.kind == ShapeKind::Cylinder
+              ? " (" + std::to_string(cylinderBands(shape)) + " bands along its length, each as tall as a segment is wide)"
+              : "";
+      r.fail(outer.pointer(kind), "radius " + formatNumber(shape.radius) + " m, half length " +
+                                      formatNumber(shape.halfLength) + " m and " + std::to_string(shape.segments) +
+                                      " segments make " + std::to_string(triangles) + " triangles" + bands +
+                                      "; at most " + std::to_string(limits::kMaxShapeTriangles) +
+                                      " (fewer segments, a larger radius or a shorter shape)");
+    }
   } else {
     r.allowOnly({"path", "scale", "sharp_tags"});
     shape.kind = ShapeKind::Mesh;

@@ -1,6 +1,7 @@
 #include "scene/scene_json.h"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
@@ -433,10 +434,12 @@ std::string overridePointer(const Override& o) {
   return pointer;
 }
 
+// A decimal index that fits a size_t; false for anything else, a number too large included
+// (std::stoul threw std::out_of_range on "cloths.99999999999999999999.name=x": exit 1).
 bool parseIndex(const std::string& text, std::size_t& index) {
   if (text.empty() || !std::all_of(text.begin(), text.end(), [](char c) { return c >= '0' && c <= '9'; })) return false;
-  index = std::stoul(text);
-  return true;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), index);
+  return error == std::errc() && end == text.data() + text.size();
 }
 
 // Appends to an InputError caused by an override the override that caused it: the scene file
@@ -529,7 +532,7 @@ void applyOverrides(json& scene, const std::vector<std::string>& overrides, cons
         if (!last && node->is_null()) *node = json::object();
       } else {
         throw InputError(file, field,
-                         "cannot set \"" + part + "\" inside a " + std::string(node->type_name()) +
+                         "cannot set \"" + echo(part) + "\" inside a " + std::string(node->type_name()) +
                              " value; only objects and arrays have fields");
       }
       if (last) *node = value;

@@ -45,14 +45,14 @@ void requireSafeName(const FieldReader& r, const std::string& key, const std::st
   if (name.empty() || !safeChars || name.front() == '.' || name.size() > kMaxNameLength) {
     r.fail(r.pointer(key), "must be a non-empty name of at most " + std::to_string(kMaxNameLength) +
                                " letters, digits, '-', '_' and '.' (not starting with '.'), got \"" + echo(name) +
-                               "\"" + (name.size() > kMaxNameLength ? " (" + std::to_string(name.size()) + " characters)" : ""));
+                               "\"" + (name.size() > kMaxNameLength ? " (" + std::to_string(name.size()) + " bytes)" : ""));
   }
 }
 
 void requirePresetNameLength(const FieldReader& r, const std::string& at, const std::string& name) {
   if (name.size() > kMaxNameLength) {
-    r.fail(at, "a preset name has at most " + std::to_string(kMaxNameLength) + " characters, got \"" + echo(name) +
-                   "\" (" + std::to_string(name.size()) + " characters)");
+    r.fail(at, "a preset name has at most " + std::to_string(kMaxNameLength) + " bytes, got \"" + echo(name) +
+                   "\" (" + std::to_string(name.size()) + " bytes)");
   }
 }
 

@@ -47,5 +47,9 @@ inline constexpr Range kShapeSize{1e-3, 100.0, false, "m"};  // radius, half len
 inline constexpr Range kMeshScale{0.0, 1000.0, true, ""};
 inline constexpr int kMaxBoxResolution = 256;
 inline constexpr int kMaxShapeSegments = 1024;
+// Triangles of one generated shape, its fields taken together (scene/shape_size.h): a cylinder's
+// bands are as tall as a segment is wide, so a thin, long one in range field by field once asked
+// for 67 billion. The finest capsule (1,024 segments) has 1,050,624.
+inline constexpr std::int64_t kMaxShapeTriangles = 1 << 21;
 
 }  // namespace weft::limits

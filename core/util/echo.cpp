@@ -1,5 +1,6 @@
 #include "util/echo.h"
 
+#include <algorithm>
 #include <cstdio>
 
 namespace weft {
@@ -50,11 +51,14 @@ bool isValidUtf8(std::string_view text) {
   return true;
 }
 
-std::string echo(std::string_view text, std::size_t limit) {
+std::string echo(std::string_view text, std::size_t maxBytes) {
+  static constexpr std::string_view kEllipsis = "…";
+  const std::size_t limit = std::max(maxBytes, kEllipsis.size());
   std::string out;
-  std::size_t shown = 0;
+  // Where to cut if the text turns out not to fit: the end of the last whole unit (character or
+  // escape) that leaves room for the ellipsis.
+  std::size_t cut = 0;
   for (std::size_t i = 0; i < text.size();) {
-    if (shown == limit) return out + "…";
     const std::size_t length = utf8Length(text, i);
     const auto c = static_cast<unsigned char>(text[i]);
     if (length == 0) {
@@ -71,7 +75,11 @@ std::string echo(std::string_view text, std::size_t limit) {
       out.append(text.substr(i, length));
       i += length;
     }
-    ++shown;
+    if (out.size() > limit) {
+      out.resize(cut);
+      return out.append(kEllipsis);
+    }
+    if (out.size() + kEllipsis.size() <= limit) cut = out.size();
   }
   return out;
 }

@@ -338,7 +338,7 @@ TEST_F(WeftCli, HostileInputIsBadInputWithAShortMessage) {
   expectShortBadInput("run " + quoted(kHangingSheet) + " --set contact.thickness=3.7 --out result", "(0, 0.1] m");
   EXPECT_FALSE(fs::exists(work() / "result"));
   expectShortBadInput("validate " + quoted(kHangingSheet) + " --set cloths.0.material=" + std::string(300, 'x'),
-                      "at most 100 characters");
+                      "at most 100 bytes");
   expectShortBadInput("validate " + quoted(kHangingSheet) + " --set $(printf 'name=\\377')", "not valid UTF-8");
   // Once a 1 MB echo of the name, and 355 KB of one line per vertex.
   expectShortBadInput("validate " + quoted(kHangingSheet) + " --set name=" + std::string(100'000, 'n'), "/name");

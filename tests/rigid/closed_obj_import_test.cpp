@@ -81,6 +81,27 @@ TEST(RigidObjImport, RejectsBadFiles) {
                  "vertex 8 is in no triangle");
 }
 
+// Found by fuzz_closed_obj: a valid tetrahedron 1e70 units across loaded, and a dynamic body made
+// from it had an infinite inertia; one 1e200 across was refused as having "zero area", and one
+// 1e-110 across as well. Sizes no scene holds are refused as such.
+TEST(RigidObjImport, RejectsSizesBeyondAnyScene) {
+  const auto tetrahedron = [](const std::string& size) {
+    return "v 0 0 0\nv " + size + " 0 0\nv 0 " + size + " 0\nv 0 0 " + size + "\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n";
+  };
+  for (const char* size : {"1e70", "1e200", "-2e9"}) {
+    expectRejected(test::writeScratchFile("huge.obj", tetrahedron(size)), "", "at most 1e+09 in magnitude");
+  }
+  expectRejected(test::writeScratchFile("tiny.obj", tetrahedron("1e-110")), "", "at least 1e-09");
+  // The limits themselves load, with a finite, positive mass and inertia.
+  for (const char* size : {"1e9", "1e-9"}) {
+    const TriangleMesh mesh = loadClosedObj(test::writeScratchFile("edge.obj", tetrahedron(size)));
+    const MassProperties body = computeMassProperties(mesh, 1.0 / signedVolume(mesh), "edge.obj");
+    EXPECT_NEAR(body.mass, 1.0, 1e-9) << size;
+    EXPECT_TRUE(body.inertia.allFinite()) << size;
+    EXPECT_GT(body.inertia.trace(), 0.0) << size;
+  }
+}
+
 TEST(RigidObjImport, ShortensWhatTinyobjloaderQuotesFromTheFile) {
   // Found by fuzz_obj_cloth: tinyobjloader warns once per unknown `usemtl` name, quoting it, before
   // the warning that matters; all of it went into the message (2.6 KB for a 2.4 KB name).

@@ -158,6 +158,14 @@ INSTANTIATE_TEST_SUITE_P(
                     "/obstacles/0/shape/box/resolution", "[1, 256]"},
         BadObstacle{"HugeSegments", R"({"shape": {"capsule": {"radius": 0.1, "half_length": 0.5, "segments": 1e6}}})",
                     "/obstacles/0/shape/capsule/segments", "[3, 1024]"},
+        // Each field in range, together 67 billion triangles (bands as tall as a segment is wide):
+        // once std::bad_alloc, exit 1, after minutes of allocating.
+        BadObstacle{"ThinLongCylinder",
+                    R"({"shape": {"cylinder": {"radius": 0.001, "half_length": 100, "segments": 1024}}})",
+                    "/obstacles/0/shape/cylinder", "at most 2097152"},
+        BadObstacle{"ThinLongCylinderFewSegments",
+                    R"({"shape": {"cylinder": {"radius": 0.001, "half_length": 100, "segments": 32}}})",
+                    "/obstacles/0/shape/cylinder", "bands"},
         BadObstacle{"FastBall", R"({"shape": {"sphere": {"radius": 0.1}}, "motion": {"dynamic": {"mass": 1, "velocity": [0, 0, -1000]}}})",
                     "/obstacles/0/motion/dynamic/velocity", "at most 340 m/s"},
         BadObstacle{"HugeContactIterations", R"(scene:{"contact": {"impact_zone_iterations": 1e9}})",

@@ -14,6 +14,7 @@
 
 #include "scene/scene_json.h"
 #include "support/temp_dir.h"
+#include "util/echo.h"
 #include "util/input_error.h"
 
 namespace weft {
@@ -309,6 +310,9 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"NaNByOverride", "", {"solver.dt=NaN"}, "/solver/dt", "solver.dt=NaN"},
         BadCase{"UnknownKeyByOverride", "", {"solver.foo=1"}, "/solver/foo", "solver.foo=1"},
         BadCase{"MalformedOverride", "", {"solver.dt"}, "override", "solver.dt"},
+        // Once std::out_of_range from std::stoul: "internal error", exit 1.
+        BadCase{"IndexPastSizeTByOverride", "", {"cloths.99999999999999999999999.name=x"}, "override",
+                "is not an index of the array there"},
         BadCase{"ZeroSubsteps", R"({"solver": {"substeps": 0}})", {}, "/solver/substeps", "[1, 1000]"},
         BadCase{"FractionalSubsteps", R"({"solver": {"substeps": 1.5}})", {}, "/solver/substeps", "integer"},
         BadCase{"ZeroThreads", R"({"solver": {"threads": 0}})", {}, "/solver/threads", "[1, 256]"},
@@ -344,9 +348,9 @@ INSTANTIATE_TEST_SUITE_P(
                 "steps per frame"},
         BadCase{"HugeNumberByOverride", "", {"solver.dt=1e999"}, "override", "too large"},
         BadCase{"LongPresetName", "", {"cloths.0.material=" + std::string(300, 'a')}, "/cloths/0/material",
-                "at most 100 characters"},
+                "at most 100 bytes"},
         BadCase{"LongTearTableName", "", {"cloths.0.tear_table=" + std::string(300, 'a')}, "/cloths/0/tear_table",
-                "at most 100 characters"},
+                "at most 100 bytes"},
         BadCase{"NulInObjPath", "", {R"(cloths.0.mesh={"obj": {"path": "a\u0000b.obj"}})"}, "override", "\\u0000"},
         BadCase{"GustOutOfRange", R"({"forces": {"wind": {"gust_amplitude": 2}}})", {},
                 "/forces/wind/gust_amplitude", "[0, 1]"},
@@ -476,7 +480,7 @@ TEST(SceneJson, EchoedValuesAreShortAndOnOneLine) {
   EXPECT_EQ(name.field(), "/name");
   EXPECT_LT(what.size(), 600u) << "a 100 KB name once came back in full";
   EXPECT_NE(what.find("…"), std::string::npos) << what;
-  EXPECT_NE(what.find("100000 characters"), std::string::npos) << what;
+  EXPECT_NE(what.find("100000 bytes"), std::string::npos) << what;
 
   // "\u0000" once cut the message short; a control character is shown escaped instead.
   TempDir dir;
@@ -488,6 +492,25 @@ TEST(SceneJson, EchoedValuesAreShortAndOnOneLine) {
   const InputError tab = inputErrorOf([&] { (void)loadScene(kPresetScenes / "hanging-sheet.json", {"name=\"a\\tb\""}); });
   EXPECT_EQ(std::string(tab.what()).find('\t'), std::string::npos) << tab.what();
   EXPECT_NE(std::string(tab.what()).find("a\\tb"), std::string::npos) << tab.what();
+}
+
+// Echoes are capped in bytes: a name of 100,000 four-byte characters gives a message no longer
+// than one of 100,000 ASCII letters (a cap in characters let it through at four times the size),
+// and the cut never leaves half a character behind.
+TEST(SceneJson, EchoedMultiByteValuesAreCappedInBytes) {
+  const fs::path scene = kPresetScenes / "hanging-sheet.json";
+  const std::string ascii = inputErrorOf([&] { (void)loadScene(scene, {"name=" + std::string(100'000, 'n')}); }).what();
+  for (const std::string character : {"é", "繊", "\xF0\x9F\xA7\xB5"}) {
+    std::string wide;
+    for (int i = 0; i < 100'000; ++i) wide += character;
+    for (const std::string& override : {"name=" + wide, "cloths.0.material=" + wide}) {
+      const InputError e = inputErrorOf([&] { (void)loadScene(scene, {override}); });
+      const std::string what = e.what();
+      EXPECT_TRUE(isValidUtf8(what)) << what;
+      EXPECT_NE(what.find("…"), std::string::npos) << what;
+      EXPECT_LE(what.size(), ascii.size() + 40) << what;  // the byte counts differ by a digit or two
+    }
+  }
 }
 
 TEST(SceneJson, AnObjClothIsPinnedByItsVLines) {
