@@ -23,6 +23,10 @@ struct TearingSpec {
   // of it (tearing/crack_tip_stress.h), and no new crack starts this close to a tip (the stress
   // there is the tip's); 0: a tip reads its own fan, like any vertex.
   double crackTipLength = 0.05;
+  // m (material space): the stress a tear reads is each triangle's averaged over this radius of
+  // cloth around it (tearing/nonlocal_stress.h), so a crack tip's or a clamp's singular stress is
+  // read the same at any resolution; 0: each triangle's own (the thesis).
+  double stressLength = 0.0;
   bool branchFromLips = false;   // a vertex on a crack's flank may start a new crack (shattering)
   int maxTearsPerStep = 1;       // per cloth per step: new cracks (with propagate) or lines (without);
                                  // the thesis tears one

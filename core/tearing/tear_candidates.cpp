@@ -53,10 +53,21 @@ TearCandidate bestThesisLine(const StressFan& fan, const TearTable& table, doubl
 
 // Dense sampling of the fan, then a golden-section search on omega between the best sample's
 // neighbours (omega need not be unimodal there; the search only improves on the sample).
+// The directions sampled: a line's half turn, or a ray's open fan, at most maxTurnRad either side
+// of its middle (for a crack tip: straight on).
+void sampledRange(const StressFan& fan, double maxTurnRad, double& from, double& range) {
+  from = fan.closed ? 0.0 : fan.openStart;
+  range = fan.closed ? std::numbers::pi : fan.openSpan;
+  if (!fan.closed && 2.0 * maxTurnRad < range) {
+    from += 0.5 * range - maxTurnRad;
+    range = 2.0 * maxTurnRad;
+  }
+}
+
 TearCandidate bestDenseLine(const StressFan& fan, const TearTable& table, double weakest, double weftAngleRad,
-                            double scale, int samples, TearSearchCounts& counts) {
-  const double from = fan.closed ? 0.0 : fan.openStart;
-  const double range = fan.closed ? std::numbers::pi : fan.openSpan;
+                            double scale, int samples, double maxTurnRad, TearSearchCounts& counts) {
+  double from = 0.0, range = 0.0;
+  sampledRange(fan, maxTurnRad, from, range);
   const double step = range / samples;
   TearCandidate best;
   for (int k = 0; k < samples; ++k) {
@@ -77,15 +88,18 @@ TearCandidate bestDenseLine(const StressFan& fan, const TearTable& table, double
 }  // namespace
 
 TearCandidate bestLineAt(const StressFan& fan, const TearTable& table, double weftAngleRad,
-                         const TearSearchSettings& settings, double strengthScale, TearSearchCounts& counts) {
+                         const TearSearchSettings& settings, double strengthScale, TearSearchCounts& counts,
+                         double maxTurnRad) {
   const double weakest = strengthScale * weakestStrength(table);
   return settings.lines == CandidateLines::Thesis
              ? bestThesisLine(fan, table, weakest, weftAngleRad, strengthScale, counts)
-             : bestDenseLine(fan, table, weakest, weftAngleRad, strengthScale, settings.denseDirections, counts);
+             : bestDenseLine(fan, table, weakest, weftAngleRad, strengthScale, settings.denseDirections, maxTurnRad,
+                             counts);
 }
 
 std::vector<TearCandidate> linesAboveOneAt(const StressFan& fan, const TearTable& table, double weftAngleRad,
-                                           const TearSearchSettings& settings, double strengthScale) {
+                                           const TearSearchSettings& settings, double strengthScale,
+                                           double maxTurnRad) {
   std::vector<TearCandidate> lines;
   if (settings.lines == CandidateLines::Thesis) {
     for (const FanSector& sector : fan.sectors) {
@@ -95,8 +109,8 @@ std::vector<TearCandidate> linesAboveOneAt(const StressFan& fan, const TearTable
     }
   } else {
     // The dense samples' local maxima: each a different way the vertex could open.
-    const double from = fan.closed ? 0.0 : fan.openStart;
-    const double range = fan.closed ? std::numbers::pi : fan.openSpan;
+    double from = 0.0, range = 0.0;
+    sampledRange(fan, maxTurnRad, from, range);
     const int n = std::max(4, settings.denseDirections);
     std::vector<TearCandidate> samples;
     for (int k = 0; k < n; ++k) {

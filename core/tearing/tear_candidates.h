@@ -22,6 +22,9 @@ namespace weft {
 
 enum class CandidateLines { Thesis, Dense };
 
+// No limit on how far a ray may turn from the middle of its open fan.
+inline constexpr double kNoTurnLimit = 4.0;  // rad, beyond any half fan
+
 struct TearSearchSettings {
   CandidateLines lines = CandidateLines::Dense;
   int denseDirections = 180;  // samples over a line's half turn (over the fan for a ray)
@@ -31,6 +34,9 @@ struct TearSearchSettings {
   // fan (crack_tip_stress.h); 0: its fan, like any other vertex.
   double tipLength = 0.0;
   int tipDirections = 72;     // rays sampled over a tip's open fan
+  // The sharpest turn a crack takes at its tip (rad from straight on, the middle of its open fan);
+  // rays further back run beside the crack's own lips.
+  double maxKinkRad = kNoTurnLimit;
   bool onlyTheBest = false;   // with skipByBound: return only the best vertex's line (one tear per
                               // step), skipping every vertex whose bound cannot beat the best so far
 };
@@ -60,12 +66,14 @@ double angleFromWarpDeg(double angle, double weftAngleRad);
 // The best line of one vertex's fan (a full TearCandidate but for its vertex, position and ray
 // flag), with the table's strengths scaled by `strengthScale` (a crack tip's propagation factor).
 TearCandidate bestLineAt(const StressFan& fan, const TearTable& table, double weftAngleRad,
-                         const TearSearchSettings& settings, double strengthScale, TearSearchCounts& counts);
+                         const TearSearchSettings& settings, double strengthScale, TearSearchCounts& counts,
+                         double maxTurnRad = kNoTurnLimit);
 
 // The other ways a vertex could open, when its best line is refused by the mesh: every line with
 // omega > 1, best first (the thesis' lines; for dense lines, the local maxima of the sampling).
 std::vector<TearCandidate> linesAboveOneAt(const StressFan& fan, const TearTable& table, double weftAngleRad,
-                                           const TearSearchSettings& settings, double strengthScale);
+                                           const TearSearchSettings& settings, double strengthScale,
+                                           double maxTurnRad = kNoTurnLimit);
 
 // The best line of every vertex whose best omega exceeds 1, in vertex order (with onlyTheBest,
 // just the one selectTears would choose first).

@@ -179,7 +179,7 @@ TearCandidate TearSearch::bestLineOf(const ClothMesh& mesh, const std::vector<Ma
                                      CrackPlace place, TearSearchCounts& counts) {
   if (place != CrackPlace::Tip) return bestLineAt(fan_, *table_, weftAngleRad_, settings_, 1.0, counts);
   if (!(settings_.tipLength > 0.0)) {
-    return bestLineAt(fan_, *table_, weftAngleRad_, settings_, table_->propagationFactor, counts);
+    return bestLineAt(fan_, *table_, weftAngleRad_, settings_, table_->propagationFactor, counts, settings_.maxKinkRad);
   }
   counts.linesEvaluated += settings_.tipDirections;
   return bestTipLine(mesh, walkFan(mesh, vertex, triangleAt_[vertex]), stress, *table_, weftAngleRad_,
@@ -213,7 +213,8 @@ std::vector<TearCandidate> TearSearch::linesAt(const ClothMesh& mesh, const std:
           ? tipLinesAboveOne(mesh, walkFan(mesh, vertex, triangleAt_[vertex]), stress, *table_, weftAngleRad_,
                              table_->propagationFactor, settings_.tipLength, settings_.tipDirections)
           : linesAboveOneAt(fan_, *table_, weftAngleRad_, settings_,
-                            place == CrackPlace::Tip ? table_->propagationFactor : 1.0);
+                            place == CrackPlace::Tip ? table_->propagationFactor : 1.0,
+                            place == CrackPlace::Tip ? settings_.maxKinkRad : kNoTurnLimit);
   for (TearCandidate& line : lines) line = candidateAt(mesh, vertex, fan_, place, line);
   return lines;
 }

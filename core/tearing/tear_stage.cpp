@@ -90,7 +90,10 @@ TearStage::TearStage(const Scene& scene) : spec_(scene.tearing) {
   searchSettings_.denseDirections = spec_.denseDirections;
   searchSettings_.skipByBound = spec_.skipByBound;
   searchSettings_.branchFromLips = spec_.branchFromLips;
-  searchSettings_.tipLength = spec_.propagate ? spec_.crackTipLength : 0.0;
+  // With averaged stress a tip reads its own fan (the average already spans the material ahead).
+  searchSettings_.tipLength = spec_.propagate && spec_.stressLength == 0.0 ? spec_.crackTipLength : 0.0;
+  // The largest kink of the maximum hoop stress criterion (Erdogan & Sih 1963), as crack_tip_stress.h.
+  if (spec_.propagate) searchSettings_.maxKinkRad = 70.5 * std::numbers::pi / 180.0;
   relaxation_.rings = spec_.relaxRings;
   relaxation_.sweeps = spec_.relaxSweeps;
   materialsChanged(scene);
@@ -125,7 +128,16 @@ TopologyChange TearStage::tearCloth(Cloth& cloth, int clothIndex, double time, d
   if (overshoot_.size() != corners_.size()) overshoot_.resize(corners_.size());
   {
     StageTimer timer(profile, "tear_stress");
-    tensileStresses(cloth, stress_);
+    tensileStresses(cloth, localStress_);
+    if (spec_.stressLength > 0.0) {
+      // Only where some triangle could reach a run-on tip's share of the weakest strength (the
+      // largest principal stress bounds zeta within pi: separation_strength.h's bound).
+      const double threshold =
+          kRunOnRatio * std::min(1.0, table.propagationFactor) * weakestStrength(table) / std::numbers::pi;
+      nonlocal_.average(cloth.mesh, localStress_, spec_.stressLength, threshold, stress_);
+    } else {
+      stress_ = localStress_;
+    }
   }
   {
     StageTimer timer(profile, "tear_search");
@@ -166,8 +178,8 @@ TopologyChange TearStage::tearCloth(Cloth& cloth, int clothIndex, double time, d
     // there, or every tip would grow a fringe of parallel cracks beside it. Beside a crack's lips
     // the stress is the opening's: the row of triangles along a lip takes up the lip's sliding as
     // shear, which read as a load would start cracks across the first one.
-    if ((starts && searchSettings_.tipLength > 0.0 &&
-         search_.nearCrack(cloth.mesh, best->restPosition, 2.0 * spec_.crackTipLength)) ||
+    const double tipReach = spec_.stressLength > 0.0 ? spec_.stressLength : searchSettings_.tipLength;
+    if ((starts && spec_.propagate && tipReach > 0.0 && search_.nearCrack(cloth.mesh, best->restPosition, 2.0 * tipReach)) ||
         (starts && spec_.propagate && crackStarts >= spec_.maxTearsPerStep) ||
         (!continues && std::any_of(started.begin(), started.end(), [&](const Vec2& p) {
           return (p - best->restPosition).norm() < spec_.minSpacing;
@@ -246,12 +258,28 @@ TopologyChange TearStage::tearCloth(Cloth& cloth, int clothIndex, double time, d
     std::vector<int> restressed = change.changedTriangles;
     {
       StageTimer timer(profile, "tear_relax");
-      tensileStresses(cloth, change.changedTriangles, stress_);
+      tensileStresses(cloth, change.changedTriangles, localStress_);
       if (spec_.propagate && spec_.relaxSweeps > 0) {
         std::vector<int> ends = change.crackEnds;
         ends.push_back(vertex);
-        const std::vector<int> patch = relaxAroundCrack(cloth, ends, relaxation_, stress_);
+        const std::vector<int> patch = relaxAroundCrack(cloth, ends, relaxation_, localStress_);
         restressed.insert(restressed.end(), patch.begin(), patch.end());
+      }
+      if (spec_.stressLength > 0.0) {
+        // The averages that read a changed triangle, on both sides of the new lips (an opened
+        // edge's other side keeps its triangles; only the edge changed).
+        std::vector<int> seeds = restressed;
+        for (int e : change.changedEdges) {
+          for (int t : cloth.mesh.edges[e].tri) {
+            if (t != kNone) seeds.push_back(t);
+          }
+        }
+        std::sort(seeds.begin(), seeds.end());
+        seeds.erase(std::unique(seeds.begin(), seeds.end()), seeds.end());
+        restressed = nonlocal_.patch(cloth.mesh, localStress_, seeds, stress_);
+      } else {
+        stress_.resize(localStress_.size());
+        for (int t : restressed) stress_[t] = localStress_[t];
       }
     }
     StageTimer timer(profile, "tear_search");

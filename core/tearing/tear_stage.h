@@ -21,6 +21,7 @@
 #include "scene/scene.h"
 #include "sim/stage_profile.h"
 #include "tearing/crack_relaxation.h"
+#include "tearing/nonlocal_stress.h"
 #include "tearing/tear_candidates.h"
 #include "tearing/tear_search.h"
 #include "util/types.h"
@@ -73,7 +74,9 @@ class TearStage {
   TearSearchSettings searchSettings_;
   CrackRelaxationSettings relaxation_;
   bool runs_ = false;
-  std::vector<Mat2> stress_;
+  std::vector<Mat2> localStress_;  // sigma+ per triangle, as tensile_stress.h gives it
+  std::vector<Mat2> stress_;       // what the search reads: localStress_, averaged when stress_length > 0
+  NonlocalStress nonlocal_;
   std::vector<std::vector<TriangleCorners>> corners_;  // per cloth, patched after each tear
   TearSearch search_;
   std::vector<std::unordered_map<int, double>> overshoot_;  // per cloth: crack tip -> metres run past its

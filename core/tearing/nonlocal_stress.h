@@ -1,0 +1,60 @@
+#pragma once
+// The stress a tear reads: each triangle's tensile stress averaged over the cloth around it, within
+// a material radius (a nonlocal stress, as nonlocal damage models regularize softening: Pijaudier-
+// Cabot & Bazant 1987; the average stress criterion of Whitney & Nuismer 1974 for notched sheets).
+//
+// Why: the stress at a crack tip or a clamp's corner is singular, so a single triangle reads more
+// of it the smaller it is, and whether and where a tear starts or runs on then depends on the
+// mesh's resolution. Averaged over a fixed material disc, the stress converges as the mesh is
+// refined, so first tears, crack speeds and side cracks do not depend on the element size; under
+// a uniform load the average is the load itself, so the direction a fabric tears along is unchanged.
+//
+// The average goes through the cloth, not across its cracks: a triangle's neighbourhood is found
+// by walking across shared edges from it, keeping the triangles whose centroid lies within the
+// radius (material space), so the lips of a crack do not average with each other except around
+// its tip. Weights: rest area times the bell (1 - (d/r)^2)^2 of the centroid distance d, which is
+// smooth, so a crack tip stepping by one element changes the average little.
+//
+// Cost: an average is needed only where the cloth could tear. The average of tensile stresses is
+// no larger (in its largest principal value) than the largest of them, so only the triangles within
+// the radius of one whose own stress could reach `threshold` are averaged; elsewhere the local
+// stress is kept (it is below the threshold too). A quiet cloth costs one pass over its triangles.
+#include <vector>
+
+#include "mesh/cloth_mesh.h"
+#include "util/types.h"
+
+namespace weft {
+
+class NonlocalStress {
+ public:
+  // `local` (per triangle sigma+, material frame) averaged into `out` within `radius` (m), where
+  // some triangle within reach has a largest principal stress of at least `threshold` (N/m).
+  void average(const ClothMesh& mesh, const std::vector<Mat2>& local, double radius, double threshold,
+               std::vector<Mat2>& out);
+  // After a tear changed the listed triangles (their local stress is already updated): the
+  // averages that depend on them, recomputed on the new mesh. Returns the triangles whose average
+  // was recomputed.
+  std::vector<int> patch(const ClothMesh& mesh, const std::vector<Mat2>& local, const std::vector<int>& changed,
+                         std::vector<Mat2>& out);
+
+ private:
+  // The triangles whose centroid lies within `reach` of triangle t's, connected to it through
+  // shared edges (t first), into `region_`.
+  void gather(const ClothMesh& mesh, int t, double reach);
+  Mat2 averageAt(const ClothMesh& mesh, const std::vector<Mat2>& local, int t);
+  void updateCentroids(const ClothMesh& mesh, const std::vector<int>& triangles);
+
+  double radius_ = 0.0;
+  double threshold_ = 0.0;
+  std::vector<Vec2> centroid_;   // material space, per triangle
+  std::vector<double> area_;     // rest area, per triangle
+  std::vector<int> stamp_;       // per triangle: the gather that last visited it
+  int currentStamp_ = 0;
+  std::vector<int> region_;      // the last gather, t first
+};
+
+// The largest principal value of a symmetric 2x2 tensor.
+double largestPrincipal(const Mat2& s);
+
+}  // namespace weft
