@@ -14,20 +14,13 @@
 #include "sim/world.h"
 #include "support/tear_scenes.h"
 #include "support/test_scenes.h"
+#include "support/world_measures.h"
 
 namespace weft {
 namespace {
 
-double totalEnergy(const World& world) {
-  const WorldMetrics m = world.metrics();
-  return m.kineticEnergy + m.elasticEnergy + m.gravityEnergy;
-}
-
-double maxDistance(const ClothMesh& a, const ClothMesh& b) {
-  double d = 0.0;
-  for (int i = 0; i < a.vertexCount(); ++i) d = std::max(d, (a.x[i] - b.x[i]).norm());
-  return d;
-}
+using test::maxDistance;
+using test::totalEnergy;
 
 // A 1 m sheet of 6 x 6 vertices hanging from its two top corners, starting horizontal: it swings
 // down and back. No contact, no damping; solved exactly (CHOLMOD, Newton to 1e-10).

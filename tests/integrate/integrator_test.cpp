@@ -4,20 +4,13 @@
 
 #include "sim/world.h"
 #include "support/test_scenes.h"
+#include "support/world_measures.h"
 
 namespace weft {
 namespace {
 
-double totalEnergy(const World& world) {
-  const WorldMetrics m = world.metrics();
-  return m.kineticEnergy + m.elasticEnergy + m.gravityEnergy;
-}
-
-double maxDistance(const ClothMesh& a, const ClothMesh& b) {
-  double d = 0.0;
-  for (int i = 0; i < a.vertexCount(); ++i) d = std::max(d, (a.x[i] - b.x[i]).norm());
-  return d;
-}
+using test::maxDistance;
+using test::totalEnergy;
 
 // The stiffest preset at a large step: stays finite, and (backward Euler dissipates) the total
 // energy never grows and the swinging dies down.
