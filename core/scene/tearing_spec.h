@@ -27,6 +27,11 @@ struct TearingSpec {
   // cloth around it (tearing/nonlocal_stress.h), so a crack tip's or a clamp's singular stress is
   // read the same at any resolution; 0: each triangle's own (the thesis).
   double stressLength = 0.0;
+  // s: a new crack starts only at a vertex whose omega has stayed above 1 this long (every step of
+  // it), so a spike shorter than this (the ligament of a crack that is crossing the sheet, a strip
+  // whipping into its clamp after it tore free) starts nothing; a crack's own tips run on at once.
+  // 0: a crack starts as soon as omega > 1 (the thesis). tear_stage.h says why.
+  double incubation = 0.0;
   bool branchFromLips = false;   // a vertex on a crack's flank may start a new crack (shattering)
   int maxTearsPerStep = 1;       // per cloth per step: new cracks (with propagate) or lines (without);
                                  // the thesis tears one

@@ -23,11 +23,14 @@ void NonlocalStress::updateCentroids(const ClothMesh& mesh, const std::vector<in
   const std::size_t count = mesh.tris.size();
   centroid_.resize(count, Vec2::Zero());
   area_.resize(count, 0.0);
+  lip_.resize(count, 0);
   stamp_.resize(count, 0);
   for (int t : triangles) {
     const Triangle& tri = mesh.tris[t];
     centroid_[t] = (tri.rest[0] + tri.rest[1] + tri.rest[2]) / 3.0;
     area_[t] = std::abs(restArea(tri));
+    lip_[t] = 0;
+    for (int e : tri.edge) lip_[t] = lip_[t] || (mesh.edges[e].torn && mesh.edges[e].isBoundary());
   }
 }
 
@@ -56,6 +59,7 @@ Mat2 NonlocalStress::averageAt(const ClothMesh& mesh, const std::vector<Mat2>& l
   double weights = 0.0;
   const double inverseRadius2 = 1.0 / (radius_ * radius_);
   for (int u : region_) {
+    if (lip_[u]) continue;
     const double d2 = (centroid_[u] - centroid_[t]).squaredNorm() * inverseRadius2;
     const double bell = (1.0 - d2) * (1.0 - d2);
     const double w = area_[u] * bell;
@@ -71,6 +75,7 @@ void NonlocalStress::average(const ClothMesh& mesh, const std::vector<Mat2>& loc
   threshold_ = threshold;
   centroid_.clear();
   area_.clear();
+  lip_.clear();
   stamp_.assign(mesh.tris.size(), 0);
   currentStamp_ = 0;
   std::vector<int> all(mesh.tris.size());

@@ -126,6 +126,9 @@ TopologyChange TearStage::tearCloth(Cloth& cloth, int clothIndex, double time, d
   std::vector<TriangleCorners>& corners = corners_[clothIndex];
   if (corners.size() != cloth.mesh.tris.size()) corners = triangleCorners(cloth.mesh);
   if (overshoot_.size() != corners_.size()) overshoot_.resize(corners_.size());
+  if (overloadedSince_.size() != corners_.size()) overloadedSince_.resize(corners_.size());
+  const std::unordered_map<int, double>& overloadedBefore = overloadedSince_[clothIndex];
+  std::unordered_map<int, double> overloadedNow;  // the vertices offered as crack starts this step
   {
     StageTimer timer(profile, "tear_stress");
     tensileStresses(cloth, localStress_);
@@ -174,6 +177,14 @@ TopologyChange TearStage::tearCloth(Cloth& cloth, int clothIndex, double time, d
     // once along an evenly loaded border would all run, side by side.
     const bool continues = fronts.frontAt.contains(vertex);
     const bool starts = !continues && !best->crackTip;
+    if (starts && spec_.incubation > 0.0) {
+      const auto since = overloadedBefore.find(vertex);
+      overloadedNow[vertex] = since != overloadedBefore.end() ? since->second : time - dt;
+      if (time - overloadedNow[vertex] < spec_.incubation - 1e-9 * dt) {
+        search_.exclude(vertex);
+        continue;
+      }
+    }
     // Within a crack tip's reach the stress is the tip's own (its concentration): the tip decides
     // there, or every tip would grow a fringe of parallel cracks beside it. Beside a crack's lips
     // the stress is the opening's: the row of triangles along a lip takes up the lip's sliding as
@@ -287,6 +298,12 @@ TopologyChange TearStage::tearCloth(Cloth& cloth, int clothIndex, double time, d
     vertices.insert(vertices.end(), change.crackEnds.begin(), change.crackEnds.end());
     vertices.push_back(vertex);
     search_.refresh(cloth.mesh, corners, stress_, restressed, vertices, stats_.search);
+  }
+  // A vertex not offered this step dropped below omega = 1, unless the step stopped before offering
+  // everything above 1 (its tear budget ran out): then the vertices of the last step keep waiting.
+  if (spec_.incubation > 0.0) {
+    if (tears >= maxTears) overloadedNow.insert(overloadedBefore.begin(), overloadedBefore.end());
+    overloadedSince_[clothIndex] = std::move(overloadedNow);
   }
   // A tip that ran past its reach (a tear opens a whole edge) owes the excess to the next step, so
   // that on average no tip runs faster than crack_speed, whatever the element size.

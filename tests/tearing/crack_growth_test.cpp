@@ -2,10 +2,12 @@
 // 64^2 must start tearing at the same time and have torn the same length after a fixed time, within
 // 10%; and tears per metre of crack may grow only as the element count does.
 //
-// NOT MET YET, so the two tests are disabled; they are the measurement the README's table comes
-// from. Run them with --gtest_also_run_disabled_tests; WEFT_CRACK_GROWTH_SETS adds --set overrides
-// (';'-separated, e.g. "tearing.propagate=true;tearing.stress_length_m=0.05"), and
-// WEFT_CRACK_GROWTH_SVG names a folder for each run's torn edges in material space (SVG).
+// Measured in the mode built for it: cracks run on within a step (propagate), the stress is read
+// averaged over 5 cm (stress_length_m), lips left out of it, and a new crack starts only after
+// 0.04 s above its strength (incubation_s). The pulled sheet meets the goal; the ball does not yet
+// (its test is disabled; the README's table has its figures). WEFT_CRACK_GROWTH_SETS adds --set
+// overrides (';'-separated, e.g. "tearing.incubation_s=0"), and WEFT_CRACK_GROWTH_SVG names a
+// folder for each run's torn edges in material space (SVG).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -106,12 +108,39 @@ void expectResolutionIndependent(const std::vector<Growth>& runs) {
   }
 }
 
-TEST(CrackGrowth, DISABLED_APulledSheetTearsTheSameAtEveryResolution) {
-  expectResolutionIndependent(growAtThreeResolutions("sheet-pulled-apart", 1.6, {}));
+// The mode under test (see the top of the file).
+const std::vector<std::string> kGrowthMode = {"tearing.propagate=true", "tearing.stress_length_m=0.05",
+                                              "tearing.incubation_s=0.04"};
+
+std::vector<std::string> with(std::vector<std::string> sets, const std::vector<std::string>& more) {
+  sets.insert(sets.end(), more.begin(), more.end());
+  return sets;
 }
 
+TEST(CrackGrowth, APulledSheetTearsTheSameAtEveryResolution) {
+  expectResolutionIndependent(growAtThreeResolutions("sheet-pulled-apart", 1.6, kGrowthMode));
+}
+
+// The mechanism the test above needs: without the incubation, the ligament a crossing crack has not
+// cut yet and the strips whipping into their clamps start cracks of their own, differently on each
+// mesh (measured 1.3 / 2.1 / 2.2 m).
+TEST(CrackGrowth, WithoutIncubationThePulledSheetTearsDifferentlyOnEachMesh) {
+  const auto runs = growAtThreeResolutions("sheet-pulled-apart", 1.6, with(kGrowthMode, {"tearing.incubation_s=0"}));
+  EXPECT_GT(spread(runs, [](const Growth& g) { return g.tornLength; }), 0.10);
+}
+
+// The clamps are the vertices within 6.5 cm of each corner: about 6.4 cm at each of the three
+// resolutions (the scene's 6 cm box holds 3.2 / 4.3 / 4.8 cm of cloth at 32 / 48 / 64^2).
+const std::vector<std::string> kSameClamps = {
+    "cloths.0.pins.0.rest_box.max=[0.065,0.065]", "cloths.0.pins.1.rest_box.min=[0.935,0]",
+    "cloths.0.pins.1.rest_box.max=[1,0.065]",     "cloths.0.pins.2.rest_box.min=[0,0.935]",
+    "cloths.0.pins.2.rest_box.max=[0.065,1]",     "cloths.0.pins.3.rest_box.min=[0.935,0.935]"};
+
+// NOT MET: 64^2 tears a loop around the ball at 0.08 s and lets it through, where 32^2 and 48^2
+// tear a smile under it at 0.125 s and then rip at the four clamps (1.13 / 1.08 / 0.82 m).
 TEST(CrackGrowth, DISABLED_ABallTearsTheSameAtEveryResolution) {
-  expectResolutionIndependent(growAtThreeResolutions("ball-into-sheet-table4.1-cloth1", 0.5, {}));
+  expectResolutionIndependent(
+      growAtThreeResolutions("ball-into-sheet-table4.1-cloth1", 0.5, with(kGrowthMode, kSameClamps)));
 }
 
 }  // namespace

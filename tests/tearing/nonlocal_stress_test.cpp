@@ -65,6 +65,39 @@ TEST(NonlocalStress, TheAverageDoesNotReachAcrossACrack) {
   }
 }
 
+// The triangles along a crack's lips read the lips' own stretch (tearing/nonlocal_stress.h): left
+// out, a uniform load is read as itself right up to the lips and the tip, whatever the lips read.
+TEST(NonlocalStress, ALipsOwnStretchIsLeftOutOfTheAverages) {
+  // A slit from the top border down to the middle, along x = 0.5.
+  ClothMesh mesh = grid(17);
+  TearGuards guards;
+  int torn = 0;
+  for (int iy = 16; iy >= 8; --iy) {
+    TopologyChange change;
+    if (tearThroughVertex(mesh, iy * 17 + 8, Vec2(0.0, 1.0), guards, 0.3, change)) ++torn;
+  }
+  ASSERT_GT(torn, 0);
+  const Mat2 load = tensor(100.0, 20.0, 5.0);
+  std::vector<Mat2> local(mesh.tris.size(), load);
+  int lips = 0;
+  for (int t = 0; t < mesh.triangleCount(); ++t) {
+    for (int e : mesh.tris[t].edge) {
+      if (mesh.edges[e].torn && mesh.edges[e].isBoundary()) {
+        local[t] = tensor(100.0, 5000.0, 0.0);  // stretched along the lip, as an opening lip reads
+        ++lips;
+        break;
+      }
+    }
+  }
+  ASSERT_GT(lips, 4);
+  NonlocalStress averaged;
+  std::vector<Mat2> out;
+  averaged.average(mesh, local, 0.15, 0.0, out);
+  for (int t = 0; t < mesh.triangleCount(); ++t) {
+    EXPECT_LT((out[t] - load).norm(), 1e-9) << "triangle " << t << " at " << centroid(mesh, t).transpose();
+  }
+}
+
 TEST(NonlocalStress, APatchAfterTearsEqualsAFreshAverage) {
   ClothMesh mesh = grid(21);
   std::mt19937 random(7);

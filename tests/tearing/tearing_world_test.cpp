@@ -360,6 +360,28 @@ CeilingRun dropOnCeiling(bool heavy) {
   return run;
 }
 
+// tearing.incubation_s: under a slowly rising pull, omega first passes 1 at t0 and stays above it,
+// so with an incubation the first crack starts that much later, to the step; the tips then run at
+// once (the crack crosses the sheet as fast as without).
+TEST(Tearing, ACrackStartsOnlyAfterTheStressHasExceededTheStrengthForTheIncubationTime) {
+  const std::string scene = std::string(WEFT_SOURCE_DIR) + "/presets/scenes/sheet-pulled-apart.json";
+  auto firstTears = [&](const std::string& incubation) {
+    World world(loadScene(scene, {"cloths.0.mesh.grid.resolution=[20,20]", "tearing.propagate=true",
+                                  "tearing.incubation_s=" + incubation}));
+    while (world.time() < 1.7 && world.tearLog().size() < 10) world.step();
+    return world.tearLog();
+  };
+  const std::vector<TearRecord> now = firstTears("0");
+  const std::vector<TearRecord> later = firstTears("0.05");
+  ASSERT_GE(now.size(), 10u);
+  ASSERT_GE(later.size(), 10u);
+  const double dt = 1.0 / 240.0;
+  // The first step above 1 counts as one step of the incubation.
+  EXPECT_NEAR(later.front().time - now.front().time, 0.05 - dt, 1.5 * dt);
+  // The crack then runs as fast: its first ten tears take as many steps.
+  EXPECT_NEAR(later[9].time - later.front().time, now[9].time - now.front().time, 1e-9);
+}
+
 TEST(Tearing, ALightBallStaysOnAClothCeilingAndAHeavyOneTearsThrough) {
   const CeilingRun light = dropOnCeiling(false);
   const CeilingRun heavy = dropOnCeiling(true);
