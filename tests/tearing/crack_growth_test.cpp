@@ -3,9 +3,10 @@
 // 10%; and tears per metre of crack may grow only as the element count does.
 //
 // Measured in the mode built for it: cracks run on within a step (propagate), the stress is read
-// averaged over 5 cm (stress_length_m), lips left out of it, and a new crack starts only after
-// 0.04 s above its strength (incubation_s). The pulled sheet meets the goal; the ball does not yet
-// (its test is disabled; the README's table has its figures). WEFT_CRACK_GROWTH_SETS adds --set
+// averaged over 6.5 cm (stress_length_m), lips left out of it, and a new crack starts only after
+// 0.06 s above its strength (incubation_s). Both scenes meet the goal there; the README's table
+// shows how near its edge that is (other lengths and delays fail on one of the two scenes).
+// WEFT_CRACK_GROWTH_SETS adds --set
 // overrides (';'-separated, e.g. "tearing.incubation_s=0"), and WEFT_CRACK_GROWTH_SVG names a
 // folder for each run's torn edges in material space (SVG).
 #include <gtest/gtest.h>
@@ -109,8 +110,8 @@ void expectResolutionIndependent(const std::vector<Growth>& runs) {
 }
 
 // The mode under test (see the top of the file).
-const std::vector<std::string> kGrowthMode = {"tearing.propagate=true", "tearing.stress_length_m=0.05",
-                                              "tearing.incubation_s=0.04"};
+const std::vector<std::string> kGrowthMode = {"tearing.propagate=true", "tearing.stress_length_m=0.065",
+                                              "tearing.incubation_s=0.06"};
 
 std::vector<std::string> with(std::vector<std::string> sets, const std::vector<std::string>& more) {
   sets.insert(sets.end(), more.begin(), more.end());
@@ -123,7 +124,7 @@ TEST(CrackGrowth, APulledSheetTearsTheSameAtEveryResolution) {
 
 // The mechanism the test above needs: without the incubation, the ligament a crossing crack has not
 // cut yet and the strips whipping into their clamps start cracks of their own, differently on each
-// mesh (measured 1.3 / 2.1 / 2.2 m).
+// mesh.
 TEST(CrackGrowth, WithoutIncubationThePulledSheetTearsDifferentlyOnEachMesh) {
   const auto runs = growAtThreeResolutions("sheet-pulled-apart", 1.6, with(kGrowthMode, {"tearing.incubation_s=0"}));
   EXPECT_GT(spread(runs, [](const Growth& g) { return g.tornLength; }), 0.10);
@@ -136,9 +137,7 @@ const std::vector<std::string> kSameClamps = {
     "cloths.0.pins.1.rest_box.max=[1,0.065]",     "cloths.0.pins.2.rest_box.min=[0,0.935]",
     "cloths.0.pins.2.rest_box.max=[0.065,1]",     "cloths.0.pins.3.rest_box.min=[0.935,0.935]"};
 
-// NOT MET: 64^2 tears a loop around the ball at 0.08 s and lets it through, where 32^2 and 48^2
-// tear a smile under it at 0.125 s and then rip at the four clamps (1.13 / 1.08 / 0.82 m).
-TEST(CrackGrowth, DISABLED_ABallTearsTheSameAtEveryResolution) {
+TEST(CrackGrowth, ABallTearsTheSameAtEveryResolution) {
   expectResolutionIndependent(
       growAtThreeResolutions("ball-into-sheet-table4.1-cloth1", 0.5, with(kGrowthMode, kSameClamps)));
 }

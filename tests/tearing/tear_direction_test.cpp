@@ -97,6 +97,36 @@ TEST(TearDirection, OnAnIrregularMeshTheTearFollowsTheWeakLine) {
   }
 }
 
+// The mode in which crack growth does not depend on the resolution (crack_growth_test.cpp): cracks
+// run on within a step, the stress is read averaged over 6.5 cm with lips left out, and a new crack
+// starts only after 0.06 s above its strength. It must follow the weak line as well.
+Scene inGrowthMode(Scene scene) {
+  scene.tearing.propagate = true;
+  scene.tearing.stressLength = 0.065;
+  scene.tearing.incubation = 0.06;
+  return scene;
+}
+
+TEST(TearDirection, InTheResolutionIndependentModeTheTearFollowsTheWeakLineToo) {
+  for (const double weftDeg : {17.0, 31.0, 62.0, 104.0}) {
+    const Scene scene = inGrowthMode(test::biaxialSheet(25, weakAlongTheWarp(), weftDeg, true));
+    const TearOutcome o = runAndMeasure(scene, warpDirectionDeg(weftDeg), kSteps);
+    print("grid, run", weftDeg, o);
+    expectFollowsTheWeakLine(o, 45.0);
+  }
+  const test::TempDir dir;
+  const auto obj = dir.write("irregular.obj", test::irregularSheetObj(24, 0.2, 7));
+  for (const double weftDeg : {17.0, 48.0}) {
+    const Scene scene = inGrowthMode(test::biaxialIrregularSheet(obj, 24, weakAlongTheWarp(), weftDeg, true));
+    World before(scene);
+    double smallest = 180.0;
+    for (const Triangle& t : before.cloth(0).tris) smallest = std::min(smallest, radToDeg(smallestRestAngle(t)));
+    const TearOutcome o = runAndMeasure(scene, warpDirectionDeg(weftDeg), kSteps);
+    print("irreg, run", weftDeg, o);
+    expectFollowsTheWeakLine(o, smallest);
+  }
+}
+
 // The thesis' lines (each triangle's edges and bisector: on this grid, every 22.5 degrees) cannot
 // follow a weak line between them: that is what the dense lines and the surgery above are for.
 TEST(TearDirection, TheThesisLinesFollowTheGridInstead) {
