@@ -6,6 +6,7 @@
 #include "bench_stats.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -29,6 +30,7 @@ struct TearingBenchRow {
   std::string lines;
   bool bound = true;
   bool propagate = false;
+  bool growthMode = false;  // the resolution-independent mode: averaged stress and incubation too
   int vertices = 0;  // at the end of the last repeat
   double medianTearingMs = 0.0;
   double medianStepMs = 0.0;
@@ -37,23 +39,36 @@ struct TearingBenchRow {
   double linesPerStep = 0.0;
 };
 
-TearingBenchRow measure(const TearingBenchOptions& options, const std::string& lines, bool bound, bool propagate) {
+// The mode whose crack growth does not depend on the resolution (README, Tearing point 9).
+constexpr double kGrowthStressLength = 0.065;  // m
+constexpr double kGrowthIncubation = 0.06;     // s
+
+TearingBenchRow measure(const TearingBenchOptions& options, const std::string& lines, bool bound, bool propagate,
+                        bool growthMode) {
   const fs::path scene = fs::path(WEFT_SOURCE_DIR) / "presets" / "scenes" / "sheet-pulled-apart.json";
   const int n = options.resolution;
-  const std::vector<std::string> overrides{
+  std::vector<std::string> overrides{
       "cloths.0.mesh.grid.resolution=[" + std::to_string(n) + "," + std::to_string(n) + "]",
       "tearing.candidates=\"" + lines + "\"", std::string("tearing.skip_by_bound=") + (bound ? "true" : "false"),
       std::string("tearing.propagate=") + (propagate ? "true" : "false"),
       "solver.threads=" + std::to_string(options.threads)};
+  if (growthMode) {
+    overrides.push_back("tearing.stress_length_m=" + std::to_string(kGrowthStressLength));
+    overrides.push_back("tearing.incubation_s=" + std::to_string(kGrowthIncubation));
+  }
   TearingBenchRow row;
   row.lines = lines;
   row.bound = bound;
   row.propagate = propagate;
+  row.growthMode = growthMode;
   std::vector<double> tearingSamples, stepSamples;
   long long tears = 0, looked = 0, skipped = 0, evaluated = 0;
   for (int repeat = 0; repeat < options.repeats; ++repeat) {
     World world(loadScene(scene, overrides));
-    for (int s = 0; s < options.warmup; ++s) world.step();
+    // The incubation delays the first tear by that many steps: warm up that much longer, so the
+    // same first tears are timed.
+    const int delay = growthMode ? static_cast<int>(std::ceil(kGrowthIncubation / world.scene().solver.dt)) : 0;
+    for (int s = 0; s < options.warmup + delay; ++s) world.step();
     const TearStats before = world.tearStats();
     for (int s = 0; s < options.steps; ++s) {
       const double tearingBefore = world.profile().totalWithPrefix("tear_");
@@ -86,14 +101,15 @@ int runTearingBench(const TearingBenchOptions& options) {
                 "tearing ms/step", "whole ms/step", "share", "tears", "skipped", "lines/step");
     struct Config {
       const char* lines;
-      bool bound, propagate;
+      bool bound, propagate, growthMode;
     };
-    for (const Config c : {Config{"thesis", true, false}, Config{"thesis", false, false}, Config{"dense", true, false},
-                           Config{"dense", false, false}, Config{"dense", true, true}}) {
+    for (const Config c : {Config{"thesis", true, false, false}, Config{"thesis", false, false, false},
+                           Config{"dense", true, false, false}, Config{"dense", false, false, false},
+                           Config{"dense", true, true, false}, Config{"dense", true, true, true}}) {
       {
-        const TearingBenchRow r = measure(options, c.lines, c.bound, c.propagate);
+        const TearingBenchRow r = measure(options, c.lines, c.bound, c.propagate, c.growthMode);
         std::printf("%-7s %-6s %-9s %8d %16.3f %14.3f %7.1f%% %10.1f %11.1f%% %12.0f\n", r.lines.c_str(),
-                    r.bound ? "on" : "off", r.propagate ? "on" : "off", r.vertices, r.medianTearingMs, r.medianStepMs,
+                    r.bound ? "on" : "off", r.growthMode ? "growth" : r.propagate ? "on" : "off", r.vertices, r.medianTearingMs, r.medianStepMs,
                     100.0 * r.medianTearingMs / r.medianStepMs, r.tearsPerRepeat, 100.0 * r.skippedShare,
                     r.linesPerStep);
         std::fflush(stdout);
@@ -109,10 +125,11 @@ int runTearingBench(const TearingBenchOptions& options) {
                              "sheet-pulled-apart, " + std::to_string(options.resolution) + "^2, " +
                                  std::to_string(options.warmup) + " warm-up steps, " + std::to_string(options.steps) +
                                  " timed steps x " + std::to_string(options.repeats) + " repeats");
-  csv << "lines,skip_by_bound,propagate,vertices,median_tearing_ms_per_step,median_step_ms,tearing_share,tears_per_repeat,"
+  csv << "lines,skip_by_bound,propagate,stress_length_m,incubation_s,vertices,median_tearing_ms_per_step,median_step_ms,tearing_share,tears_per_repeat,"
          "skipped_vertex_share,lines_evaluated_per_step\n";
   for (const auto& r : rows) {
-    csv << r.lines << "," << (r.bound ? "true" : "false") << "," << (r.propagate ? "true" : "false") << "," << r.vertices << "," << r.medianTearingMs << ","
+    csv << r.lines << "," << (r.bound ? "true" : "false") << "," << (r.propagate ? "true" : "false") << ","
+        << (r.growthMode ? kGrowthStressLength : 0.0) << "," << (r.growthMode ? kGrowthIncubation : 0.0) << "," << r.vertices << "," << r.medianTearingMs << ","
         << r.medianStepMs << "," << r.medianTearingMs / r.medianStepMs << "," << r.tearsPerRepeat << ","
         << r.skippedShare << "," << r.linesPerStep << "\n";
   }
