@@ -117,21 +117,85 @@ TEST(Timeline, AnEditOnAnEarlierFrameDropsTheFramesAfterItAndContinuesFromIt) {
   EXPECT_EQ(session.world().stepCount(), 2 * session.stepsPerFrame()) << "back at frame 2";
   session.advanceFrame(0.0);
   EXPECT_FALSE(session.shownFrame()) << "live again, at frame 2";
-  EXPECT_EQ(positionsHash(*session.view()), twoHash) << "rebuilt exactly (World::step is deterministic)";
+  EXPECT_EQ(positionsHash(*session.view()), twoHash) << "frame 2's state, copied";
   EXPECT_DOUBLE_EQ(session.world().scene().cloths[0].weftAngleDeg, 30.0);
   playFrames(session, 2);
   EXPECT_EQ(session.liveFrame(), 4);
   EXPECT_NE(positionsHash(*session.view()), fourHash) << "frame 4 again, simulated with the edit";
 }
 
-// A reset while the world is being rebuilt at an earlier frame abandons the rebuild: the session
-// is at t = 0 with only frame 0 cached, and nothing from the rebuild arrives later.
-TEST(Timeline, AResetDuringARewindAbandonsIt) {
+// The sheet with a linear solver whose answer depends only on the state (block Jacobi CG), so a
+// world resumed from a frame and one that never stopped agree bit for bit (World::clone).
+fs::path blockJacobiSheet(const test::TempDir& dir, const std::string& name) {
+  std::ifstream in(fs::path(WEFT_SOURCE_DIR) / "presets" / "scenes" / "ball-into-sheet-table4.1-cloth2.json");
+  json scene = json::parse(in);
+  scene["cloths"][0]["mesh"]["grid"]["resolution"] = json::array({10, 10});
+  scene["solver"]["linear_solver"]["preconditioner"] = "block_jacobi";
+  return dir.write("scenes/" + name, scene.dump(2));
+}
+
+// Item 7 as Houdini's playbar does it: an edit at frame k keeps frames 0..k as they were and the
+// simulation continues from frame k's own state, not from t = 0. The resumed world is a copy of
+// the one cached at frame k: its stage times (wall clock, never reproduced by simulating again)
+// are frame k's to the bit, and it steps on exactly as a world edited live at frame k does.
+TEST(Timeline, AnEditOnAnEarlierFrameResumesFromThatFramesStateWithoutResimulating) {
+  test::TempDir dir;
+  const fs::path file = blockJacobiSheet(dir, "scrubbed.json");
+  EditorSession scrubbed(file);
+  playFrames(scrubbed, 6);
+  const std::shared_ptr<const WorldSnapshot> frameOne = scrubbed.frames().find(1);
+  const std::shared_ptr<const WorldSnapshot> frameThree = scrubbed.frames().find(3);
+  ASSERT_TRUE(frameThree && scrubbed.frames().worldAt(3)) << "each cached frame keeps its world";
+  scrubbed.showFrame(3);
+  ASSERT_TRUE(scrubbed.edit(withWeftAngle(scrubbed.json(), 0, 30.0), "weft angle").accepted);
+  const World& resumed = scrubbed.world();
+  EXPECT_EQ(resumed.stepCount(), 3 * scrubbed.stepsPerFrame());
+  EXPECT_EQ(resumed.profile().totalMs, frameThree->profile.totalMs) << "frame 3's world, copied, not simulated again";
+  EXPECT_EQ(resumed.solverStats().linearIterations, frameThree->solver.linearIterations);
+  EXPECT_EQ(scrubbed.frames().lastFrame(), 3);
+  EXPECT_EQ(scrubbed.frames().find(1), frameOne) << "frames 0..3 are kept as they were";
+  EXPECT_EQ(scrubbed.frames().find(3), frameThree);
+  playFrames(scrubbed, 3);
+
+  // The same edit made live at frame 3, never going back.
+  EditorSession live(blockJacobiSheet(dir, "live.json"));
+  playFrames(live, 3);
+  ASSERT_TRUE(live.edit(withWeftAngle(live.json(), 0, 30.0), "weft angle").accepted);
+  playFrames(live, 3);
+  ASSERT_EQ(scrubbed.liveFrame(), 6);
+  ASSERT_EQ(live.liveFrame(), 6);
+  EXPECT_EQ(scrubbed.world().stateHash(), live.world().stateHash());
+  EXPECT_EQ(scrubbed.world().tearLog().size(), live.world().tearLog().size());
+  EXPECT_EQ(positionsHash(*scrubbed.frames().find(5)), positionsHash(*live.frames().find(5)));
+}
+
+// Going back twice to the same frame starts from the same state both times: the cached frame's
+// world is copied, never stepped itself.
+TEST(Timeline, ACachedFramesWorldIsNotChangedByResumingFromIt) {
+  test::TempDir dir;
+  EditorSession session(blockJacobiSheet(dir, "twice.json"));
+  playFrames(session, 4);
+  const std::shared_ptr<const World> frameTwo = session.frames().worldAt(2);
+  ASSERT_TRUE(frameTwo);
+  const std::uint64_t hash = frameTwo->stateHash();
+  session.showFrame(2);
+  ASSERT_TRUE(session.edit(withWeftAngle(session.json(), 0, 30.0), "weft angle").accepted);
+  playFrames(session, 2);
+  EXPECT_EQ(frameTwo->stateHash(), hash);
+  EXPECT_EQ(frameTwo->stepCount(), 2 * session.stepsPerFrame());
+  session.showFrame(2);
+  ASSERT_TRUE(session.edit(withWeftAngle(session.json(), 0, 0.0), "weft angle").accepted);
+  EXPECT_EQ(session.world().stateHash(), hash) << "back at frame 2's state (the weft edit moves no vertex)";
+}
+
+// A reset while the world is going back to an earlier frame: the session is at t = 0 with only
+// frame 0 cached, and nothing from the resume arrives later.
+TEST(Timeline, AResetWhileGoingBackToAFrameWins) {
   test::TempDir dir;
   EditorSession session(tearingSheet(dir));
   playFrames(session, 6);
   session.showFrame(5);
-  ASSERT_TRUE(session.edit(withWeftAngle(session.json(), 0, 30.0), "weft angle").accepted);  // rewinds to 5
+  ASSERT_TRUE(session.edit(withWeftAngle(session.json(), 0, 30.0), "weft angle").accepted);  // back to 5
   session.reset();
   EXPECT_EQ(session.world().stepCount(), 0);
   session.advanceFrame(0.0);

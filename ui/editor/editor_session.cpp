@@ -85,14 +85,14 @@ void EditorSession::rebuildWorld() {
   auto world = std::make_unique<World>(scene_);
   if (worker_) {
     collectSteps();
-    worker_->attach(std::move(world), scene_);
+    worker_->attach(std::move(world));
   } else {
-    worker_ = std::make_unique<StepWorker>(std::move(world), scene_);
+    worker_ = std::make_unique<StepWorker>(std::move(world));
   }
   liveScene_ = scene_;
   frameSteps_ = std::max<long long>(weft::stepsPerFrame(scene_), 1);
   frames_.clear();
-  frames_.add(0, worker_->snapshot());
+  frames_.add(0, worker_->snapshot(), worker_->copyWhenIdle());
   shownFrame_.reset();
   rewinding_ = false;
   ++worldGeneration_;
@@ -123,14 +123,19 @@ std::shared_ptr<const WorldSnapshot> EditorSession::view() const {
 }
 
 void EditorSession::applyToWorld(std::function<void(World&)> change) {
-  if (shownFrame_ && !rewinding_ && *shownFrame_ < liveFrame()) {
-    // Changing the world while looking at an earlier frame: it goes back to that frame, with the
-    // scene as the document has it now, and continues from there.
-    worker_->rewindTo(*shownFrame_ * frameSteps_);
+  const std::shared_ptr<const World> frameWorld =
+      shownFrame_ && !rewinding_ && *shownFrame_ < liveFrame() ? frames_.worldAt(*shownFrame_) : nullptr;
+  if (frameWorld) {
+    // Changing the world while looking at an earlier frame: the world goes back to that frame's
+    // own state (a copy of it, kept by the cache), with the scene as the document has it now,
+    // and continues from there; nothing is re-simulated.
+    worker_->resumeFrom(frameWorld);
     worker_->apply([scene = liveScene_](World& world) { applyLiveEdits(world, scene); });
     frames_.invalidateAfter(*shownFrame_);
     rewinding_ = true;
     stopped_ = false;
+  } else if (shownFrame_ && !rewinding_) {
+    shownFrame_.reset();  // a frame kept without its world: the change lands on the live world, shown
   }
   worker_->apply(std::move(change));
 }
@@ -159,7 +164,7 @@ void EditorSession::collectSteps() {
     frames_.invalidateAfter(*result->rewoundTo / frameSteps_);
     meteredTime_ = worker_->snapshot()->time;
   }
-  for (const auto& [frame, snapshot] : result->frames) frames_.add(frame, snapshot);
+  for (const StepResult::Frame& frame : result->frames) frames_.add(frame.frame, frame.snapshot, frame.world);
   if (result->unhealthy && !unhealthy_) {
     unhealthy_ = result->unhealthy;
     status = "warning: " + healthWarning(*unhealthy_);

@@ -138,7 +138,7 @@ class EditorSession {
   FrameCache frames_;
   long long frameSteps_ = 1;
   std::optional<long long> shownFrame_;  // the timeline shows this cached frame (none: live)
-  bool rewinding_ = false;               // until the worker reports the rewind done
+  bool rewinding_ = false;               // until the worker reports the world back at the shown frame
   double frameClock_ = 0.0;              // playing through cached frames: the fraction of a frame
   bool resetPending_ = false;
   std::optional<Refusal> refusal_;

@@ -26,14 +26,14 @@ std::size_t snapshotBytes(const WorldSnapshot& snapshot) {
   return bytes;
 }
 
-void FrameCache::add(long long frame, std::shared_ptr<const WorldSnapshot> snapshot) {
+void FrameCache::add(long long frame, std::shared_ptr<const WorldSnapshot> snapshot, std::shared_ptr<const World> world) {
   if (!snapshot) return;
   if (auto it = frames_.find(frame); it != frames_.end()) {
     bytes_ -= it->second.bytes;
     frames_.erase(it);
   }
-  const std::size_t size = snapshotBytes(*snapshot);
-  frames_.emplace(frame, Entry{std::move(snapshot), size});
+  const std::size_t size = snapshotBytes(*snapshot) + (world ? world->approximateBytes() : 0);
+  frames_.emplace(frame, Entry{std::move(snapshot), std::move(world), size});
   bytes_ += size;
   // Over budget: the oldest frames go first, frame 0 last, the newest never.
   while (bytes_ > budgetBytes_ && frames_.size() > 1) {
@@ -47,6 +47,11 @@ void FrameCache::add(long long frame, std::shared_ptr<const WorldSnapshot> snaps
 std::shared_ptr<const WorldSnapshot> FrameCache::find(long long frame) const {
   const auto it = frames_.find(frame);
   return it == frames_.end() ? nullptr : it->second.snapshot;
+}
+
+std::shared_ptr<const World> FrameCache::worldAt(long long frame) const {
+  const auto it = frames_.find(frame);
+  return it == frames_.end() ? nullptr : it->second.world;
 }
 
 void FrameCache::invalidateAfter(long long frame) {

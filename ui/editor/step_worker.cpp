@@ -8,16 +8,14 @@
 
 namespace weft::editor {
 
-StepWorker::StepWorker(std::unique_ptr<World> world, Scene builtFrom)
+StepWorker::StepWorker(std::unique_ptr<World> world)
     : world_(std::move(world)),
-      builtFrom_(std::move(builtFrom)),
-      frameSteps_(std::max<long long>(stepsPerFrame(builtFrom_), 1)),
+      frameSteps_(std::max<long long>(stepsPerFrame(world_->scene()), 1)),
       snapshot_(snapshotOf(*world_)),
       health_(std::in_place, *world_, frameSteps_),
       thread_([this] { run(); }) {}
 
 StepWorker::~StepWorker() {
-  abandonRewind_ = true;
   {
     std::lock_guard lock(mutex_);
     quit_ = true;
@@ -26,39 +24,37 @@ StepWorker::~StepWorker() {
   thread_.join();
 }
 
-void StepWorker::attach(std::unique_ptr<World> world, Scene builtFrom) {
-  abandonRewind_ = true;
+void StepWorker::attach(std::unique_ptr<World> world) {
   std::unique_lock lock(mutex_);
   owed_ = 0;  // steps of the old world are not wanted: only the one running is waited for
   held_ = false;
-  rewindTo_.reset();
+  resumeFrom_.reset();
   idle_.wait(lock, [&] { return !running_; });
   std::unique_ptr<World> old = std::exchange(world_, std::move(world));
-  builtFrom_ = std::move(builtFrom);
-  frameSteps_ = std::max<long long>(stepsPerFrame(builtFrom_), 1);
-  changeLog_.clear();
+  frameSteps_ = std::max<long long>(stepsPerFrame(world_->scene()), 1);
   queued_.clear();
   result_ = StepResult{};
   snapshot_ = snapshotOf(*world_);
   snapshotStale_ = false;
   health_.emplace(*world_, frameSteps_);
   rebaseHealth_ = false;
-  abandonRewind_ = false;
 }
 
-void StepWorker::rewindTo(long long step) {
+void StepWorker::resumeFrom(std::shared_ptr<const World> frameWorld) {
+  if (!frameWorld) return;
   {
     std::lock_guard lock(mutex_);
-    rewindTo_ = std::max(step, 0LL);
+    resumeFrom_ = std::move(frameWorld);
     owed_ = 0;
     held_ = false;
   }
   wake_.notify_all();
 }
 
-void StepWorker::applyLogged(std::function<void(World&)> change) {
+std::shared_ptr<const World> StepWorker::copyWhenIdle() { return idleWorld().clone(); }
+
+void StepWorker::applyNow(std::function<void(World&)> change) {
   change(*world_);
-  changeLog_.emplace_back(world_->stepCount(), std::move(change));
   snapshotStale_ = true;
   rebaseHealth_ = true;
 }
@@ -74,7 +70,7 @@ void StepWorker::ask(long long steps, long long maxOwed) {
 
 long long StepWorker::owed() const {
   std::lock_guard lock(mutex_);
-  return owed_ + (rewindTo_ ? 1 : 0);  // a rewind counts as work owed
+  return owed_ + (resumeFrom_ ? 1 : 0);  // a resume counts as work owed
 }
 
 void StepWorker::wait() {
@@ -98,7 +94,7 @@ void StepWorker::apply(std::function<void(World&)> edit) {
     queued_.push_back(std::move(edit));
     return;
   }
-  applyLogged(std::move(edit));
+  applyNow(std::move(edit));
 }
 
 World& StepWorker::worldWhenIdle() {
@@ -122,7 +118,7 @@ const World& StepWorker::idleWorld() {
 const World& StepWorker::worldBetweenSteps() {
   std::unique_lock lock(mutex_);
   held_ = true;
-  idle_.wait(lock, [&] { return !running_ && !rewindTo_; });
+  idle_.wait(lock, [&] { return !running_ && !resumeFrom_; });
   applyQueued(lock);  // the user's earlier changes come first
   return *world_;
 }
@@ -149,7 +145,7 @@ std::shared_ptr<const WorldSnapshot> StepWorker::snapshot() {
 void StepWorker::applyQueued(std::unique_lock<std::mutex>& lock) {
   (void)lock;
   if (queued_.empty()) return;
-  for (auto& edit : queued_) applyLogged(std::move(edit));
+  for (auto& edit : queued_) applyNow(std::move(edit));
   queued_.clear();
   snapshot_ = snapshotOf(*world_, snapshot_.get());
 }
@@ -157,10 +153,10 @@ void StepWorker::applyQueued(std::unique_lock<std::mutex>& lock) {
 void StepWorker::run() {
   std::unique_lock lock(mutex_);
   for (;;) {
-    wake_.wait(lock, [&] { return quit_ || rewindTo_ || (owed_ > 0 && !held_); });
+    wake_.wait(lock, [&] { return quit_ || resumeFrom_ || (owed_ > 0 && !held_); });
     if (quit_) return;
-    if (rewindTo_) {
-      rewind(lock);
+    if (resumeFrom_) {
+      resume(lock);
       continue;
     }
     applyQueued(lock);
@@ -180,11 +176,13 @@ void StepWorker::run() {
       health_.reset();  // reported once, as `weft run` reports it
     }
     std::shared_ptr<const WorldSnapshot> next = snapshotOf(world, previous.get());
+    const bool frameEnds = world.stepCount() % frameSteps_ == 0;
+    std::shared_ptr<const World> frameWorld = frameEnds ? std::shared_ptr<const World>(world.clone()) : nullptr;
     lock.lock();
     running_ = false;
     snapshot_ = std::move(next);
     result_.stepMs.push_back(1000.0 * seconds);
-    if (world.stepCount() % frameSteps_ == 0) result_.frames.emplace_back(world.stepCount() / frameSteps_, snapshot_);
+    if (frameEnds) result_.frames.push_back({world.stepCount() / frameSteps_, snapshot_, std::move(frameWorld)});
     if (unhealthy) result_.unhealthy = std::move(unhealthy);
     --owed_;
     if (!finite) {
@@ -196,42 +194,26 @@ void StepWorker::run() {
   }
 }
 
-// Runs unlocked while it steps (running_): the UI reads the snapshot meanwhile and queues its
-// changes, which land on the rebuilt world.
-void StepWorker::rewind(std::unique_lock<std::mutex>& lock) {
-  const long long target = *rewindTo_;
-  std::vector<std::pair<long long, std::function<void(World&)>>> log = std::move(changeLog_);
-  changeLog_.clear();
+// Copies the frame's world unlocked (running_): the UI reads the snapshot meanwhile and queues
+// its changes, which land on the copy. The cached frame's own world stays as it is, for the next
+// time the timeline goes back there.
+void StepWorker::resume(std::unique_lock<std::mutex>& lock) {
+  const std::shared_ptr<const World> from = std::move(resumeFrom_);
+  resumeFrom_.reset();
   running_ = true;
   lock.unlock();
-  auto world = std::make_unique<World>(builtFrom_);
-  std::size_t next = 0;
-  for (;;) {
-    for (; next < log.size() && log[next].first == world->stepCount(); ++next) log[next].second(*world);
-    if (world->stepCount() >= target || abandonRewind_) break;
-    world->step();
-  }
-  if (abandonRewind_) {  // a reset or the end of the session: the old world stays until replaced
-    lock.lock();
-    changeLog_ = std::move(log);
-    rewindTo_.reset();
-    running_ = false;
-    idle_.notify_all();
-    return;
-  }
-  log.resize(next);  // what landed later is gone with the frames after this one
+  std::unique_ptr<World> world = from->clone();
   std::shared_ptr<const WorldSnapshot> snapshot = snapshotOf(*world);
   lock.lock();
+  // attach() waits for running_ to clear, so a reset meanwhile replaces this copy right after.
+  running_ = false;
   std::unique_ptr<World> old = std::exchange(world_, std::move(world));
-  changeLog_ = std::move(log);
   snapshot_ = std::move(snapshot);
   snapshotStale_ = false;
   health_.emplace(*world_, frameSteps_);
   rebaseHealth_ = false;
-  result_.frames.clear();  // stepped before the rewind: gone with it
+  result_.frames.clear();  // stepped before the resume: gone with it
   result_.rewoundTo = world_->stepCount();
-  rewindTo_.reset();
-  running_ = false;
   applyQueued(lock);
   idle_.notify_all();
   lock.unlock();
