@@ -21,6 +21,7 @@
 #include "editor/editor_workspace.h"
 #include "editor/headless_recorder.h"
 #include "editor/input_queue.h"
+#include "editor/scene_browser.h"
 #include "editor/viewport_interaction.h"
 #include "glfw_window.h"
 #include "orbit_controls.h"
@@ -181,6 +182,9 @@ int runEditor(const EditorOptions& options) {
   ui::GlfwWindow window(settings);
   ImGuiLayer imgui(window.handle());
   ui::SceneRenderer renderer;
+  // The browser's thumbnails are textures of this window's context, drawn by the same renderer.
+  editor::SceneBrowser browser(editor::browserFolders(workspace.session().document().file()), editor::ThumbnailCache());
+  ui.panels.browser = &browser;
   auto viewportRect = [&] {
     const ui::PixelSize size = window.framebufferSize();
     return editor::sceneViewport(size.width, size.height);
@@ -246,6 +250,7 @@ int runEditor(const EditorOptions& options) {
       session->paused = true;  // every scene opens paused at t = 0
       camera = startCamera(*session, viewportRect());
       window.setTitle("Weft: " + session->scene().name);
+      browser.setFolders(editor::browserFolders(session->document().file()));
     }
     workspace.forgetAutosaveWhenClean();
     // Real time: the simulation advances by as long as the last frame took (at the target speed).
@@ -262,6 +267,9 @@ int runEditor(const EditorOptions& options) {
       }
     }
 
+    // Lazily, one a frame and only while the browser shows them: a thumbnail read from the cache
+    // or drawn (its scene built at t = 0) offscreen, before this frame draws.
+    if (ui.panels.browserOpen) browser.makeNextThumbnail(renderer);
     drawFrame();
     window.swapBuffers();
     ++displayed;
