@@ -181,6 +181,7 @@ int runEditor(const EditorOptions& options) {
   settings.height = 900;
   ui::GlfwWindow window(settings);
   ImGuiLayer imgui(window.handle());
+  window.takeBackCharacters();  // characters go through the input queue, in order with the keys
   ui::SceneRenderer renderer;
   // The browser's thumbnails are textures of this window's context, drawn by the same renderer.
   editor::SceneBrowser browser(editor::browserFolders(workspace.session().document().file()), editor::ThumbnailCache());
@@ -194,8 +195,6 @@ int runEditor(const EditorOptions& options) {
   editor::ViewportInteraction interaction;
   editor::InputQueue inputQueue;
   workspace.session().paused = !options.play;
-  std::printf("weft edit: %s (%s)\n", options.scene.string().c_str(), window.glRenderer().c_str());
-  std::fflush(stdout);
 
   auto drawFrame = [&] {
     window.bindDefaultFramebuffer();
@@ -273,6 +272,12 @@ int runEditor(const EditorOptions& options) {
     drawFrame();
     window.swapBuffers();
     ++displayed;
+    if (displayed == 1) {
+      // Once the window shows the scene and its panels: from here a click lands on a widget
+      // (the window tests wait for this line before they click).
+      std::printf("weft edit: %s (%s)\n", options.scene.string().c_str(), window.glRenderer().c_str());
+      std::fflush(stdout);
+    }
     if (Clock::now() - lastAutosave > kAutosaveEvery) {
       try {
         workspace.writeAutosave();

@@ -164,6 +164,20 @@ class EditorWindow : public ::testing::Test {
     run("cd '" + root_.string() + "' && " + environment() + "'" + WEFT_BINARY + "' " + arguments + " > '" +
         log.string() + "' 2>&1 & echo $! > '" + pidFile().string() + "'");
   }
+  // Waits until `log` (weft's output) holds `text`; false after `seconds`.
+  static bool waitForOutput(const fs::path& log, const std::string& text, int seconds) {
+    for (int i = 0; i < 10 * seconds; ++i) {
+      if (readText(log).find(text) != std::string::npos) return true;
+      std::this_thread::sleep_for(100ms);
+    }
+    return false;
+  }
+  // Waits until the editor has drawn its first frame (it prints "weft edit: SCENE (RENDERER)"
+  // then): before it, the window may exist while the scene is still being built, and a click
+  // lands on no widget, as it would for a user. False after `seconds`.
+  static bool waitForFirstFrame(const fs::path& log, const fs::path& scene, int seconds) {
+    return waitForOutput(log, "weft edit: " + scene.string() + " (", seconds);
+  }
   // Waits for the editor's window; false after `seconds`.
   bool waitForWindow(int seconds) const {
     return run(display_->env() + "timeout " + std::to_string(seconds) +
@@ -200,7 +214,8 @@ TEST_F(EditorWindow, AfterKillMinus9TheNextStartOffersTheEditsBack) {
   locator.finish();
 
   startWeft("edit '" + edited.string() + "'", root_ / "first.txt");
-  ASSERT_TRUE(waitForWindow(30)) << readText(root_ / "first.txt");
+  ASSERT_TRUE(waitForWindow(60)) << readText(root_ / "first.txt");
+  ASSERT_TRUE(waitForFirstFrame(root_ / "first.txt", edited, 120)) << readText(root_ / "first.txt");
   pressAt(ImVec2(dial.x + 40, dial.y - 23));  // the weft to about 30 degrees: one edit
   // The autosave comes within 5 s of the edit.
   const weft::editor::Autosave store(autosaveDir());
@@ -230,18 +245,20 @@ TEST_F(EditorWindow, KeyTapsShorterThanAFrameAreNotLost) {
   locator.finish();
 
   startWeft("edit '" + scene.string() + "'", root_ / "taps.txt");
-  ASSERT_TRUE(waitForWindow(30)) << readText(root_ / "taps.txt");
-  // The window exists before its first frame is drawn (the scene is still being built): a click
-  // then lands on no widget, as it would for a user, so the taps start once it has drawn.
-  std::this_thread::sleep_for(1500ms);
+  ASSERT_TRUE(waitForWindow(60)) << readText(root_ / "taps.txt");
+  // The taps start once the window has drawn (not after a guessed delay: on a loaded machine
+  // building the scene and the first frame take longer than any fixed wait).
+  ASSERT_TRUE(waitForFirstFrame(root_ / "taps.txt", scene, 120)) << readText(root_ / "taps.txt");
   pressAt(field);
   std::this_thread::sleep_for(300ms);
   display_->xdotool("type --delay 120 20");
   display_->xdotool("key Return");
   std::this_thread::sleep_for(500ms);
   display_->xdotool("key ctrl+s");
+  // The events are queued and reach ImGui one frame after another, in order, however slow the
+  // frames: they all arrive, in as many frames as it takes (a minute, on a very loaded machine).
   double saved = 0.0;
-  for (int i = 0; i < 100 && saved != 20.0; ++i) {
+  for (int i = 0; i < 600 && saved != 20.0; ++i) {
     std::this_thread::sleep_for(100ms);
     const json j = json::parse(readText(scene), nullptr, false);
     if (!j.is_discarded() && j["cloths"][0].contains("tear_table") && j["cloths"][0]["tear_table"].is_object())
@@ -290,7 +307,8 @@ TEST_F(EditorWindow, ScrubbingBackShowsTheSamePixelsAsWhenTheFrameWasSimulated) 
   std::ofstream(file) << scene.dump(2);
 
   startWeft("edit '" + file.string() + "'", root_ / "scrub.txt");
-  ASSERT_TRUE(waitForWindow(30)) << readText(root_ / "scrub.txt");
+  ASSERT_TRUE(waitForWindow(60)) << readText(root_ / "scrub.txt");
+  ASSERT_TRUE(waitForFirstFrame(root_ / "scrub.txt", file, 120)) << readText(root_ / "scrub.txt");
   display_->xdotool("search --name '^Weft' mousemove --window %1 700 450");  // over the scene, not a panel
   const auto stepAndWait = [&](const std::string& key) {
     display_->xdotool("key " + key);
