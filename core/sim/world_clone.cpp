@@ -38,42 +38,6 @@ World::Impl::Impl(const Impl& other)
   }
 }
 
-namespace {
-
-template <typename T>
-std::size_t vectorBytes(const std::vector<T>& v) {
-  return v.capacity() * sizeof(T);
-}
-
-std::size_t clothBytes(const Cloth& cloth) {
-  const ClothMesh& m = cloth.mesh;
-  std::size_t bytes = sizeof(Cloth) + vectorBytes(m.x) + vectorBytes(m.v) + vectorBytes(m.mass) + vectorBytes(m.pinned) +
-                      vectorBytes(m.tris) + vectorBytes(m.edges) + vectorBytes(cloth.membranes) + vectorBytes(cloth.hinges);
-  for (const PinTrack& pins : cloth.pins) bytes += vectorBytes(pins.vertices) + vectorBytes(pins.start);
-  return bytes;
-}
-
-std::size_t obstacleBytes(const Obstacle& o) {
-  std::size_t bytes = sizeof(Obstacle) + vectorBytes(o.bodyVertices) + vectorBytes(o.sharpVertex) +
-                      vectorBytes(o.sharpEdge) + vectorBytes(o.x0) + vectorBytes(o.x1) +
-                      vectorBytes(o.topology.triangles) + vectorBytes(o.topology.edges) +
-                      vectorBytes(o.topology.triangleEdges) + vectorBytes(o.topology.vertexOwner) +
-                      vectorBytes(o.topology.edgeOwner);
-  for (const std::vector<int>& around : o.topology.trianglesAround) bytes += sizeof(around) + vectorBytes(around);
-  return bytes;
-}
-
-}  // namespace
-
-std::size_t World::approximateBytes() const {
-  const Impl& w = *impl_;
-  std::size_t bytes = sizeof(World) + sizeof(Impl);
-  for (const Cloth& cloth : w.cloths) bytes += clothBytes(cloth);
-  for (const Obstacle& obstacle : w.obstacles) bytes += obstacleBytes(obstacle);
-  for (const std::vector<Vec3>& start : w.startPositions) bytes += vectorBytes(start);
-  return bytes;
-}
-
 World::World(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
 
 std::unique_ptr<World> World::clone() const {

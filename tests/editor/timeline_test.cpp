@@ -4,6 +4,7 @@
 // an earlier frame drops the frames after it and the simulation continues from there.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -77,6 +78,46 @@ TEST(FrameCache, StaysWithinItsBudgetDroppingTheOldestButFrameZero) {
   cache.invalidateAfter(0);
   EXPECT_EQ(cache.lastFrame(), 0);
   EXPECT_EQ(cache.nearest(4), 0);
+}
+
+// Past the budget the world copies go first, thinned evenly: every frame stays shown, the kept
+// copies spread over the timeline (frame 0's and the newest kept), and each frame resumes from
+// the nearest kept copy at or before it.
+TEST(FrameCache, WorldCopiesAreThinnedEvenlyBeforeAnyFrameGoes) {
+  test::TempDir dir;
+  EditorSession session(tearingSheet(dir));
+  const std::shared_ptr<const WorldSnapshot> one = session.view();
+  const std::shared_ptr<const World> world = session.frames().worldAt(0);
+  ASSERT_TRUE(world);
+  const std::size_t s = snapshotBytes(*one), w = world->approximateBytes();
+  EXPECT_GT(w, s) << "a world copy weighs more than what is drawn";
+  FrameCache cache(33 * s + 6 * w + w / 2);  // every frame, and room for six copies
+  for (long long f = 0; f <= 32; ++f) cache.add(f, one, world);
+  EXPECT_EQ(cache.frameCount(), 33u) << "no frame dropped while copies can go";
+  EXPECT_EQ(cache.worldCount(), 6u);
+  EXPECT_LE(cache.bytes(), cache.budgetBytes());
+  EXPECT_TRUE(cache.worldAt(0));
+  EXPECT_TRUE(cache.worldAt(32));
+  long long previous = 0, widest = 0;
+  for (long long f = 1; f <= 32; ++f) {
+    if (!cache.worldAt(f)) continue;
+    widest = std::max(widest, f - previous);
+    previous = f;
+  }
+  EXPECT_LE(widest, 2 * 32 / 5) << "spread evenly, not only the newest kept";
+  for (long long f = 0; f <= 32; ++f) {
+    const std::optional<long long> from = cache.worldFrameAtOrBefore(f);
+    ASSERT_TRUE(from);
+    EXPECT_LE(*from, f);
+    EXPECT_GT(*from, f - widest);
+  }
+  cache.setBudget(33 * s);  // no room for copies but frame 0's and the newest
+  EXPECT_EQ(cache.worldCount(), 2u);
+  cache.setBudget(10 * s);  // then frames go, the oldest first, frame 0 last
+  EXPECT_LE(cache.bytes(), cache.budgetBytes());
+  EXPECT_TRUE(cache.find(0));
+  EXPECT_TRUE(cache.find(32));
+  EXPECT_FALSE(cache.find(1));
 }
 
 TEST(Timeline, ScrubbingBackShowsACachedFrameWithoutSimulating) {
@@ -167,6 +208,47 @@ TEST(Timeline, AnEditOnAnEarlierFrameResumesFromThatFramesStateWithoutResimulati
   EXPECT_EQ(scrubbed.world().stateHash(), live.world().stateHash());
   EXPECT_EQ(scrubbed.world().tearLog().size(), live.world().tearLog().size());
   EXPECT_EQ(positionsHash(*scrubbed.frames().find(5)), positionsHash(*live.frames().find(5)));
+}
+
+// With a budget too small for a copy per frame, an edit on a frame whose copy was thinned away
+// steps the nearest earlier copy forward to it (with the changes made meanwhile, here a live edit
+// at frame 2), not the world from t = 0, and continues exactly as an edit made live there.
+TEST(Timeline, AFrameWithoutItsOwnCopyResumesFromTheNearestEarlierOne) {
+  test::TempDir dir;
+  EditorSession scrubbed(blockJacobiSheet(dir, "thinned.json"));
+  playFrames(scrubbed, 2);
+  ASSERT_TRUE(scrubbed.edit(withGravity(scrubbed.json(), Vec3(0.0, -5.0, 0.0)), "gravity").accepted);
+  playFrames(scrubbed, 7);
+  // Frame 9's sizes: at frame 0 the contact stage has built nothing yet.
+  const std::size_t s = snapshotBytes(*scrubbed.frames().find(9));
+  const std::size_t w = scrubbed.frames().worldAt(9)->approximateBytes();
+  scrubbed.setTimelineBudget(10 * s + 4 * w);  // frames 0..9, about four copies: 0, 9 and two between
+  ASSERT_EQ(scrubbed.frames().frameCount(), 10u);
+  ASSERT_LT(scrubbed.frames().worldCount(), 7u);
+  long long target = -1;
+  for (long long f = 8; f > 1 && target < 0; --f) {
+    if (!scrubbed.frames().worldAt(f) && scrubbed.frames().worldFrameAtOrBefore(f) > 0) target = f;
+  }
+  ASSERT_GT(target, 0) << "a frame without its own copy, a kept copy after frame 0 before it";
+  scrubbed.showFrame(target);
+  ASSERT_TRUE(scrubbed.edit(withWeftAngle(scrubbed.json(), 0, 30.0), "weft angle").accepted);
+  ASSERT_TRUE(scrubbed.lastResume());
+  EXPECT_EQ(scrubbed.lastResume()->frame, target);
+  EXPECT_EQ(scrubbed.lastResume()->from, *scrubbed.frames().worldFrameAtOrBefore(target));
+  EXPECT_GT(scrubbed.lastResume()->from, 0) << "from the nearest kept copy, not from t = 0";
+  EXPECT_LT(scrubbed.lastResume()->from, target);
+  EXPECT_EQ(scrubbed.world().stepCount(), target * scrubbed.stepsPerFrame());
+  playFrames(scrubbed, 2);
+
+  EditorSession live(blockJacobiSheet(dir, "live-thinned.json"));
+  playFrames(live, 2);
+  ASSERT_TRUE(live.edit(withGravity(live.json(), Vec3(0.0, -5.0, 0.0)), "gravity").accepted);
+  playFrames(live, static_cast<int>(target) - 2);
+  ASSERT_TRUE(live.edit(withWeftAngle(live.json(), 0, 30.0), "weft angle").accepted);
+  playFrames(live, 2);
+  ASSERT_EQ(scrubbed.liveFrame(), live.liveFrame());
+  EXPECT_EQ(scrubbed.world().stateHash(), live.world().stateHash());
+  EXPECT_EQ(scrubbed.world().tearLog().size(), live.world().tearLog().size());
 }
 
 // Going back twice to the same frame starts from the same state both times: the cached frame's

@@ -93,6 +93,7 @@ void EditorSession::rebuildWorld() {
   frameSteps_ = std::max<long long>(weft::stepsPerFrame(scene_), 1);
   frames_.clear();
   frames_.add(0, worker_->snapshot(), worker_->copyWhenIdle());
+  lastResume_.reset();
   shownFrame_.reset();
   rewinding_ = false;
   ++worldGeneration_;
@@ -123,13 +124,14 @@ std::shared_ptr<const WorldSnapshot> EditorSession::view() const {
 }
 
 void EditorSession::applyToWorld(std::function<void(World&)> change) {
-  const std::shared_ptr<const World> frameWorld =
-      shownFrame_ && !rewinding_ && *shownFrame_ < liveFrame() ? frames_.worldAt(*shownFrame_) : nullptr;
-  if (frameWorld) {
+  const std::optional<long long> from =
+      shownFrame_ && !rewinding_ && *shownFrame_ < liveFrame() ? frames_.worldFrameAtOrBefore(*shownFrame_) : std::nullopt;
+  if (from) {
     // Changing the world while looking at an earlier frame: the world goes back to that frame's
-    // own state (a copy of it, kept by the cache), with the scene as the document has it now,
-    // and continues from there; nothing is re-simulated.
-    worker_->resumeFrom(frameWorld);
+    // own state (a copy of the world kept with it, or with the nearest frame before it, stepped
+    // forward), with the scene as the document has it now, and continues from there.
+    worker_->resumeFrom(frames_.worldAt(*from), *shownFrame_ * frameSteps_);
+    lastResume_ = Resume{*shownFrame_, *from};
     worker_->apply([scene = liveScene_](World& world) { applyLiveEdits(world, scene); });
     frames_.invalidateAfter(*shownFrame_);
     rewinding_ = true;

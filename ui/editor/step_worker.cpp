@@ -16,6 +16,7 @@ StepWorker::StepWorker(std::unique_ptr<World> world)
       thread_([this] { run(); }) {}
 
 StepWorker::~StepWorker() {
+  abandonResume_ = true;
   {
     std::lock_guard lock(mutex_);
     quit_ = true;
@@ -25,6 +26,7 @@ StepWorker::~StepWorker() {
 }
 
 void StepWorker::attach(std::unique_ptr<World> world) {
+  abandonResume_ = true;
   std::unique_lock lock(mutex_);
   owed_ = 0;  // steps of the old world are not wanted: only the one running is waited for
   held_ = false;
@@ -32,18 +34,21 @@ void StepWorker::attach(std::unique_ptr<World> world) {
   idle_.wait(lock, [&] { return !running_; });
   std::unique_ptr<World> old = std::exchange(world_, std::move(world));
   frameSteps_ = std::max<long long>(stepsPerFrame(world_->scene()), 1);
+  changeLog_.clear();
   queued_.clear();
   result_ = StepResult{};
   snapshot_ = snapshotOf(*world_);
   snapshotStale_ = false;
   health_.emplace(*world_, frameSteps_);
   rebaseHealth_ = false;
+  abandonResume_ = false;
 }
 
-void StepWorker::resumeFrom(std::shared_ptr<const World> frameWorld) {
+void StepWorker::resumeFrom(std::shared_ptr<const World> frameWorld, long long step) {
   if (!frameWorld) return;
   {
     std::lock_guard lock(mutex_);
+    resumeStep_ = std::max(step, frameWorld->stepCount());
     resumeFrom_ = std::move(frameWorld);
     owed_ = 0;
     held_ = false;
@@ -53,8 +58,9 @@ void StepWorker::resumeFrom(std::shared_ptr<const World> frameWorld) {
 
 std::shared_ptr<const World> StepWorker::copyWhenIdle() { return idleWorld().clone(); }
 
-void StepWorker::applyNow(std::function<void(World&)> change) {
+void StepWorker::applyLogged(std::function<void(World&)> change) {
   change(*world_);
+  changeLog_.emplace_back(world_->stepCount(), std::move(change));
   snapshotStale_ = true;
   rebaseHealth_ = true;
 }
@@ -94,7 +100,7 @@ void StepWorker::apply(std::function<void(World&)> edit) {
     queued_.push_back(std::move(edit));
     return;
   }
-  applyNow(std::move(edit));
+  applyLogged(std::move(edit));
 }
 
 World& StepWorker::worldWhenIdle() {
@@ -145,7 +151,7 @@ std::shared_ptr<const WorldSnapshot> StepWorker::snapshot() {
 void StepWorker::applyQueued(std::unique_lock<std::mutex>& lock) {
   (void)lock;
   if (queued_.empty()) return;
-  for (auto& edit : queued_) applyNow(std::move(edit));
+  for (auto& edit : queued_) applyLogged(std::move(edit));
   queued_.clear();
   snapshot_ = snapshotOf(*world_, snapshot_.get());
 }
@@ -194,20 +200,44 @@ void StepWorker::run() {
   }
 }
 
-// Copies the frame's world unlocked (running_): the UI reads the snapshot meanwhile and queues
-// its changes, which land on the copy. The cached frame's own world stays as it is, for the next
-// time the timeline goes back there.
+// Copies the frame's world, and steps the copy forward to the step asked for with the logged
+// changes replayed where they landed, unlocked (running_): the UI reads the snapshot meanwhile
+// and queues its changes, which land on the result. The cached frame's own world stays as it is,
+// for the next time the timeline goes back there.
 void StepWorker::resume(std::unique_lock<std::mutex>& lock) {
   const std::shared_ptr<const World> from = std::move(resumeFrom_);
   resumeFrom_.reset();
+  const long long target = resumeStep_;
+  // Changes that landed after the copy was taken: after its step (the copy is taken right after
+  // the step, before any change lands there), up to the target.
+  std::vector<std::pair<long long, std::function<void(World&)>>> log = std::move(changeLog_);
+  changeLog_.clear();
   running_ = true;
   lock.unlock();
   std::unique_ptr<World> world = from->clone();
+  std::size_t next = 0;
+  while (next < log.size() && log[next].first < world->stepCount()) ++next;  // already in the copy
+  std::vector<std::pair<long long, std::function<void(World&)>>> kept(log.begin(), log.begin() + next);
+  for (;;) {
+    for (; next < log.size() && log[next].first == world->stepCount(); ++next) {
+      log[next].second(*world);
+      kept.push_back(log[next]);
+    }
+    if (world->stepCount() >= target || abandonResume_) break;
+    world->step();
+  }
+  if (abandonResume_) {  // a reset or the end of the session: the old world stays until replaced
+    lock.lock();
+    changeLog_ = std::move(log);
+    running_ = false;
+    idle_.notify_all();
+    return;
+  }
   std::shared_ptr<const WorldSnapshot> snapshot = snapshotOf(*world);
   lock.lock();
-  // attach() waits for running_ to clear, so a reset meanwhile replaces this copy right after.
   running_ = false;
   std::unique_ptr<World> old = std::exchange(world_, std::move(world));
+  changeLog_ = std::move(kept);  // what landed later is gone with the frames after this one
   snapshot_ = std::move(snapshot);
   snapshotStale_ = false;
   health_.emplace(*world_, frameSteps_);

@@ -14,12 +14,17 @@
 // an edit of the wind) restart its energy baseline, since they are input the check cannot see.
 //
 // Resuming (the timeline, item 7): every output frame stepped comes with a copy of the world
-// at its end (World::clone), which the timeline caches beside the frame's snapshot. Going back to
-// a cached frame puts a copy of that frame's world in place of the live one (made on the worker):
-// the simulation continues from the frame's own state, nothing is re-simulated.
+// at its end (World::clone), which the timeline caches beside the frame's snapshot (thinned
+// evenly when memory runs short, frame_cache.h). Going back to a cached frame puts a copy of that
+// frame's world in place of the live one, made on the worker: the simulation continues from the
+// frame's own state, nothing is re-simulated. When that frame's copy was thinned away, the
+// nearest earlier copy is stepped forward to the frame, every change applied since replayed
+// where it landed (each change is logged with the step it landed after; World::step is
+// deterministic), so the world is the frame's exactly; never from t = 0 unless that is nearest.
 //
 // Determinism: the worker runs World::step exactly as `weft run` does, one after another; only
 // when an edit lands (between which two steps) depends on timing, as it does for any user.
+#include <atomic>
 #include <condition_variable>
 #include <cstddef>
 #include <functional>
@@ -55,19 +60,20 @@ class StepWorker {
  public:
   // Starts the thread, idle, on `world`.
   explicit StepWorker(std::unique_ptr<World> world);
-  // Drops the owed steps after the one running (and a resume not begun), and joins the thread.
+  // Drops the owed steps after the one running (and a resume in progress), and joins the thread.
   ~StepWorker();
   StepWorker(const StepWorker&) = delete;
   StepWorker& operator=(const StepWorker&) = delete;
 
   // Replaces the world (a reset built a new one): waits for the step in flight, drops the owed
-  // steps, a resume not begun, the queued edits (they were for the old world) and the
+  // steps, a resume in progress, the queued edits (they were for the old world) and the
   // uncollected result.
   void attach(std::unique_ptr<World> world);
 
-  // Replaces the world by a copy of `frameWorld` (a cached frame's, see above), on the worker,
-  // and returns at once; owed steps are dropped, changes applied after the call land on the copy.
-  void resumeFrom(std::shared_ptr<const World> frameWorld);
+  // Replaces the world by a copy of `frameWorld` (a cached frame's, see above) stepped forward to
+  // `step` (none: as it is), on the worker, and returns at once; owed steps are dropped, changes
+  // applied after the call land on the result.
+  void resumeFrom(std::shared_ptr<const World> frameWorld, long long step);
   // A copy of the world as it is now, once the owed steps are taken (frame 0 of the timeline).
   std::shared_ptr<const World> copyWhenIdle();
 
@@ -102,7 +108,7 @@ class StepWorker {
   void applyQueued(std::unique_lock<std::mutex>& lock);
   bool uiOwnsWorld() const { return !running_ && !resumeFrom_ && (owed_ == 0 || held_); }  // under mutex_
   bool idle() const { return !running_ && !resumeFrom_ && owed_ == 0; }                    // under mutex_
-  void applyNow(std::function<void(World&)> change);  // under mutex_, the world not stepping
+  void applyLogged(std::function<void(World&)> change);  // under mutex_, the world not stepping
   void resume(std::unique_lock<std::mutex>& lock);
 
   mutable std::mutex mutex_;
@@ -111,6 +117,8 @@ class StepWorker {
   std::unique_ptr<World> world_;
   long long frameSteps_ = 1;  // steps of an output frame
   std::shared_ptr<const World> resumeFrom_;  // asked for, not yet done
+  long long resumeStep_ = 0;                 // ... stepped forward to this step
+  std::vector<std::pair<long long, std::function<void(World&)>>> changeLog_;  // step landed after, change
   long long owed_ = 0;  // steps asked for and not yet taken (the one running included)
   StepResult result_;
   std::vector<std::function<void(World&)>> queued_;
@@ -121,6 +129,9 @@ class StepWorker {
   bool running_ = false;  // a step is running (unlocked) on the worker
   bool held_ = false;     // worldBetweenSteps: no step starts until release()
   bool quit_ = false;
+  // A reset or the end of the session abandons a resume in progress (it may be stepping a copy
+  // forward) instead of waiting for it; read by the worker between the resume's steps.
+  std::atomic<bool> abandonResume_{false};
   std::thread thread_;  // last: started once everything above is ready
 };
 
