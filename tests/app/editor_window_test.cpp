@@ -330,4 +330,46 @@ TEST_F(EditorWindow, ScrubbingBackShowsTheSamePixelsAsWhenTheFrameWasSimulated) 
   EXPECT_TRUE(scrubbed.sameRegion(simulated, x0, y0, x1, y1)) << "frame 1 scrubbed back to is not frame 1 as simulated";
 }
 
+// The timeline in the real window (item 7): four steps (a step is a frame here), Left twice back
+// to frame 2, then an edit there (the weft dial): the frames after 2 are dropped and the world
+// goes on from frame 2 (the headless Timeline tests show it is frame 2's own state, copied, not
+// simulated again). The editor, paused after the edit, shows the live world at step 2, not 4.
+TEST_F(EditorWindow, AnEditOnAnEarlierFrameContinuesFromThatFrame) {
+  std::ifstream in(fs::path(WEFT_SOURCE_DIR) / "presets" / "scenes" / "ball-into-sheet-table4.1-cloth2.json");
+  json scene = json::parse(in);
+  scene["cloths"][0]["mesh"]["grid"]["resolution"] = json::array({8, 8});
+  scene["output"]["fps"] = 240;  // dt 1/240 s: a step is a frame
+  const fs::path file = root_ / "scenes" / "edit-back.json";
+  std::ofstream(file) << scene.dump(2);
+  WidgetLocator locator;
+  if (!locator.start()) GTEST_SKIP() << "headless EGL is needed to locate the widgets";
+  const ImVec2 dial = locator.centre("weft/dial");
+  locator.finish();
+
+  startWeft("edit '" + file.string() + "' --frames 150", root_ / "back.txt");
+  ASSERT_TRUE(waitForWindow(60)) << readText(root_ / "back.txt");
+  ASSERT_TRUE(waitForFirstFrame(root_ / "back.txt", file, 120)) << readText(root_ / "back.txt");
+  display_->xdotool("search --name '^Weft' mousemove --window %1 700 450");  // over the scene, not a panel
+  for (int i = 0; i < 4; ++i) {
+    display_->xdotool("key n");
+    std::this_thread::sleep_for(300ms);
+  }
+  std::this_thread::sleep_for(1000ms);
+  display_->xdotool("key Left");
+  std::this_thread::sleep_for(300ms);
+  display_->xdotool("key Left");
+  std::this_thread::sleep_for(1000ms);
+  pressAt(ImVec2(dial.x + 40, dial.y - 23));  // the weft to about 30 degrees: an edit on frame 2
+  std::this_thread::sleep_for(1000ms);
+  // End shows the live world (without the edit going back, it would still be at step 4 and the
+  // summary, which reports what is shown, would say 2 only because frame 2 was on screen).
+  display_->xdotool("search --name '^Weft' mousemove --window %1 700 450");
+  display_->xdotool("key End");
+  ASSERT_TRUE(waitForOutput(root_ / "back.txt", " frames in ", 300)) << readText(root_ / "back.txt");
+  const std::string out = readText(root_ / "back.txt");
+  std::smatch summary;
+  ASSERT_TRUE(std::regex_search(out, summary, std::regex(R"(the scene at step (\d+))"))) << out;
+  EXPECT_EQ(std::stoll(summary[1]), 2) << "back at frame 2 and on from there: " << out;
+}
+
 }  // namespace
