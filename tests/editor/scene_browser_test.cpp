@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdlib>
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 
@@ -141,6 +142,30 @@ TEST_F(SceneBrowserTest, ThePanelShowsEachSceneAndAClickOpensIt) {
   imgui_->click(probe_.centre("browser/hanging-sheet"), drawUi());
   EXPECT_EQ(ui_.panels.openRequest, hangingSheet_);
   EXPECT_FALSE(ui_.panels.browserOpen) << "the browser closes once a scene is chosen";
+}
+
+// The Materials tab: each preset of the scene's search path with its source, listed once (not
+// read every frame); a click gives the selected cloth that material.
+TEST_F(SceneBrowserTest, TheMaterialsTabListsPresetsWithTheirSourceAndAClickUsesOne) {
+  SceneBrowser browser({folder()}, ThumbnailCache(dir_.path() / "cache"));
+  ui_.panels.browser = &browser;
+  ui_.panels.browserOpen = true;
+  for (int frame = 0; frame < 2; ++frame) imgui_->frame(drawUi());  // a tab bar lays its tabs out in its second frame
+  imgui_->click(probe_.centre("browser/materials-tab"), drawUi());
+  imgui_->frame(drawUi());  // a tab chosen in one frame shows its contents from the next
+  if (const char* keep = std::getenv("WEFT_KEEP_THUMBNAILS"); keep != nullptr && *keep != '\0') {
+    fs::create_directories(keep);
+    test::writePng(fs::path(keep) / "materials_tab.png", imgui_->image());
+  }
+  ASSERT_FALSE(browser.materials().empty());
+  const auto royal = std::find_if(browser.materials().begin(), browser.materials().end(),
+                                  [](const BrowserPreset& p) { return p.name == "royal-target"; });
+  ASSERT_NE(royal, browser.materials().end());
+  EXPECT_FALSE(royal->source.empty()) << "its source is shown";
+  ASSERT_TRUE(probe_.rects.count("browser/material/royal-target"));
+  ASSERT_NE(session_->scene().cloths[0].materialName, "royal-target");
+  imgui_->click(probe_.centre("browser/material/royal-target"), drawUi());
+  EXPECT_EQ(session_->scene().cloths[0].materialName, "royal-target") << session_->status;
 }
 
 }  // namespace

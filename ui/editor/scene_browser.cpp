@@ -59,6 +59,25 @@ std::vector<fs::path> browserFolders(const fs::path& openScene) {
   return folders;
 }
 
+void SceneBrowser::setMaterialFolders(std::vector<fs::path> folders) {
+  if (folders == materialFolders_) return;
+  materialFolders_ = std::move(folders);
+  listMaterials();
+}
+
+void SceneBrowser::listMaterials() {
+  materials_.clear();
+  for (const std::string& name : presetNames(materialFolders_)) {
+    BrowserPreset preset{name, ""};
+    for (const fs::path& folder : materialFolders_) {  // the first folder that has it, as scenes find it
+      if (!fs::exists(folder / (name + ".json"))) continue;
+      preset.source = presetSource(folder / (name + ".json"));
+      break;
+    }
+    materials_.push_back(std::move(preset));
+  }
+}
+
 void SceneBrowser::setFolders(std::vector<fs::path> folders) {
   if (folders == folders_) return;
   folders_ = std::move(folders);
@@ -102,6 +121,7 @@ void SceneBrowser::rescan() {
   }
   for (BrowserScene& gone : scenes_) freeTexture(gone.texture);
   scenes_ = std::move(next);
+  listMaterials();
 }
 
 bool SceneBrowser::pending() const {

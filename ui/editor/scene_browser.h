@@ -29,6 +29,12 @@ struct BrowserScene {
 // (the project's, and $WEFT_DATA_DIR's when set).
 std::vector<std::filesystem::path> browserFolders(const std::filesystem::path& openScene);
 
+// A material preset as the browser lists it.
+struct BrowserPreset {
+  std::string name;    // the file's stem, as a scene names it
+  std::string source;  // where its numbers come from (empty when the file has none)
+};
+
 class SceneBrowser {
  public:
   SceneBrowser(std::vector<std::filesystem::path> folders, ThumbnailCache cache);
@@ -39,9 +45,13 @@ class SceneBrowser {
   SceneBrowser& operator=(const SceneBrowser&) = delete;
 
   // Lists the folders' scenes again, sorted by name, each file once; a scene whose file did not
-  // change keeps its thumbnail.
+  // change keeps its thumbnail. The material presets are listed again too.
   void rescan();
   const std::vector<BrowserScene>& scenes() const { return scenes_; }
+  // The material presets of `folders` (the open scene's search path), listed once per change of
+  // folders or rescan, not every frame.
+  void setMaterialFolders(std::vector<std::filesystem::path> folders);
+  const std::vector<BrowserPreset>& materials() const { return materials_; }
   const ThumbnailCache& cache() const { return cache_; }
 
   // The next pending thumbnail: read from the cache, or rendered (building the scene's world)
@@ -53,10 +63,13 @@ class SceneBrowser {
 
  private:
   void makeThumbnail(BrowserScene& scene, ui::SceneRenderer& renderer);
+  void listMaterials();
 
   std::vector<std::filesystem::path> folders_;
   ThumbnailCache cache_;
   std::vector<BrowserScene> scenes_;
+  std::vector<std::filesystem::path> materialFolders_;
+  std::vector<BrowserPreset> materials_;
   int rendered_ = 0;
   int fromCache_ = 0;
 };

@@ -9,7 +9,6 @@
 #include "editor/scene_browser.h"
 #include "editor/scene_edits.h"
 #include "panels.h"
-#include "preset_names.h"
 #include "scene/scene_json.h"
 
 namespace weft::editor {
@@ -50,25 +49,21 @@ void drawScenes(EditorSession& session, PanelState& state, SceneBrowser& browser
   ImGui::EndTable();
 }
 
-void drawMaterials(EditorSession& session, PanelState& state) {
+void drawMaterials(EditorSession& session, PanelState& state, SceneBrowser& browser) {
   const Scene& scene = session.scene();
   if (scene.cloths.empty()) return;
   const ClothSpec& cloth = scene.cloths[static_cast<std::size_t>(std::clamp(state.cloth, 0, static_cast<int>(scene.cloths.size()) - 1))];
   ImGui::Text("A click gives cloth \"%s\" the material:", cloth.name.c_str());
-  const std::vector<std::filesystem::path> folders = defaultSearchPaths(scene.file).materialDirs;
-  for (const std::string& name : presetNames(folders)) {
-    if (ImGui::Selectable(name.c_str(), cloth.materialName == name)) {
-      session.edit(withMaterialPreset(session.json(), state.cloth, name), "material " + name);
+  browser.setMaterialFolders(defaultSearchPaths(scene.file).materialDirs);  // lists them when the folders change
+  for (const BrowserPreset& preset : browser.materials()) {
+    if (ImGui::Selectable(preset.name.c_str(), cloth.materialName == preset.name)) {
+      session.edit(withMaterialPreset(session.json(), state.cloth, preset.name), "material " + preset.name);
     }
-    recordWidget(state, "browser/material/" + name);
-    for (const std::filesystem::path& folder : folders) {
-      const std::string source = presetSource(folder / (name + ".json"));
-      if (source.empty()) continue;
-      ImGui::PushTextWrapPos(0.0f);
-      ImGui::TextDisabled("    %s", source.c_str());
-      ImGui::PopTextWrapPos();
-      break;
-    }
+    recordWidget(state, "browser/material/" + preset.name);
+    if (preset.source.empty()) continue;
+    ImGui::PushTextWrapPos(0.0f);
+    ImGui::TextDisabled("    %s", preset.source.c_str());
+    ImGui::PopTextWrapPos();
   }
 }
 
@@ -86,12 +81,16 @@ void drawBrowserPanel(EditorSession& session, PanelState& state) {
   }
   if (ImGui::IsWindowAppearing()) state.browser->rescan();  // files added or changed since last time
   if (ImGui::BeginTabBar("##browser")) {
-    if (ImGui::BeginTabItem("Scenes")) {
+    const bool scenes = ImGui::BeginTabItem("Scenes");
+    recordWidget(state, "browser/scenes-tab");
+    if (scenes) {
       drawScenes(session, state, *state.browser);
       ImGui::EndTabItem();
     }
-    if (ImGui::BeginTabItem("Materials")) {
-      drawMaterials(session, state);
+    const bool materials = ImGui::BeginTabItem("Materials");
+    recordWidget(state, "browser/materials-tab");
+    if (materials) {
+      drawMaterials(session, state, *state.browser);
       ImGui::EndTabItem();
     }
     ImGui::EndTabBar();
