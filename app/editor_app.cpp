@@ -6,6 +6,7 @@
 #include <imgui_impl_opengl3.h>
 #include <imgui_internal.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
@@ -218,6 +219,9 @@ int runEditor(const EditorOptions& options) {
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
   };
 
+  // ImGui lays a new window out in its first frame and settles it in the next ones (a scrollbar
+  // appears once the content is measured): the editor says it is ready after this many.
+  constexpr int kFramesToSettle = 3;
   Clock::time_point lastAutosave = Clock::now();
   Clock::time_point lastFrame = Clock::now();
   int displayed = 0;
@@ -272,9 +276,9 @@ int runEditor(const EditorOptions& options) {
     drawFrame();
     window.swapBuffers();
     ++displayed;
-    if (displayed == 1) {
-      // Once the window shows the scene and its panels: from here a click lands on a widget
-      // (the window tests wait for this line before they click).
+    if (displayed == std::min(kFramesToSettle, options.frames.value_or(kFramesToSettle))) {
+      // Once the window shows the scene and its panels, settled: a click lands on a widget from
+      // here (the window tests wait for this line before they click).
       std::printf("weft edit: %s (%s)\n", options.scene.string().c_str(), window.glRenderer().c_str());
       std::fflush(stdout);
     }
