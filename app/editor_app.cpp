@@ -6,6 +6,7 @@
 #include <imgui_impl_opengl3.h>
 #include <imgui_internal.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
@@ -21,6 +22,7 @@
 #include "editor/editor_workspace.h"
 #include "editor/headless_recorder.h"
 #include "editor/input_queue.h"
+#include "editor/scene_browser.h"
 #include "editor/viewport_interaction.h"
 #include "glfw_window.h"
 #include "orbit_controls.h"
@@ -180,7 +182,11 @@ int runEditor(const EditorOptions& options) {
   settings.height = 900;
   ui::GlfwWindow window(settings);
   ImGuiLayer imgui(window.handle());
+  window.takeBackCharacters();  // characters go through the input queue, in order with the keys
   ui::SceneRenderer renderer;
+  // The browser's thumbnails are textures of this window's context, drawn by the same renderer.
+  editor::SceneBrowser browser(editor::browserFolders(workspace.session().document().file()), editor::ThumbnailCache());
+  ui.panels.browser = &browser;
   auto viewportRect = [&] {
     const ui::PixelSize size = window.framebufferSize();
     return editor::sceneViewport(size.width, size.height);
@@ -190,8 +196,6 @@ int runEditor(const EditorOptions& options) {
   editor::ViewportInteraction interaction;
   editor::InputQueue inputQueue;
   workspace.session().paused = !options.play;
-  std::printf("weft edit: %s (%s)\n", options.scene.string().c_str(), window.glRenderer().c_str());
-  std::fflush(stdout);
 
   auto drawFrame = [&] {
     window.bindDefaultFramebuffer();
@@ -215,6 +219,9 @@ int runEditor(const EditorOptions& options) {
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
   };
 
+  // ImGui lays a new window out in its first frame and settles it in the next ones (a scrollbar
+  // appears once the content is measured): the editor says it is ready after this many.
+  constexpr int kFramesToSettle = 3;
   Clock::time_point lastAutosave = Clock::now();
   Clock::time_point lastFrame = Clock::now();
   int displayed = 0;
@@ -246,6 +253,7 @@ int runEditor(const EditorOptions& options) {
       session->paused = true;  // every scene opens paused at t = 0
       camera = startCamera(*session, viewportRect());
       window.setTitle("Weft: " + session->scene().name);
+      browser.setFolders(editor::browserFolders(session->document().file()));
     }
     workspace.forgetAutosaveWhenClean();
     // Real time: the simulation advances by as long as the last frame took (at the target speed).
@@ -262,9 +270,18 @@ int runEditor(const EditorOptions& options) {
       }
     }
 
+    // Lazily, one a frame and only while the browser shows them: a thumbnail read from the cache
+    // or drawn (its scene built at t = 0) offscreen, before this frame draws.
+    if (ui.panels.browserOpen) browser.makeNextThumbnail(renderer);
     drawFrame();
     window.swapBuffers();
     ++displayed;
+    if (displayed == std::min(kFramesToSettle, options.frames.value_or(kFramesToSettle))) {
+      // Once the window shows the scene and its panels, settled: a click lands on a widget from
+      // here (the window tests wait for this line before they click).
+      std::printf("weft edit: %s (%s)\n", options.scene.string().c_str(), window.glRenderer().c_str());
+      std::fflush(stdout);
+    }
     if (Clock::now() - lastAutosave > kAutosaveEvery) {
       try {
         workspace.writeAutosave();

@@ -41,6 +41,12 @@ void onKey(GLFWwindow* window, int key, int /*scancode*/, int action, int /*mods
   }
 }
 
+void onCharacter(GLFWwindow* window, unsigned codepoint) {
+  ButtonEvent event;
+  event.character = codepoint;
+  inputOf(window).buttonEvents.push_back(event);
+}
+
 void onScroll(GLFWwindow* window, double /*dx*/, double dy) { inputOf(window).mouse.scrollY += dy; }
 
 void onMouseButton(GLFWwindow* window, int button, int action, int /*mods*/) {
@@ -76,7 +82,10 @@ GlfwWindow::GlfwWindow(const WindowSettings& settings) : title_(settings.title) 
   glfwSetKeyCallback(window_, onKey);
   glfwSetScrollCallback(window_, onScroll);
   glfwSetMouseButtonCallback(window_, onMouseButton);
+  glfwSetCharCallback(window_, onCharacter);
 }
+
+void GlfwWindow::takeBackCharacters() { glfwSetCharCallback(window_, onCharacter); }
 
 GlfwWindow::~GlfwWindow() {
   glfwDestroyWindow(window_);

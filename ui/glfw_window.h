@@ -54,6 +54,11 @@ class GlfwWindow {
 
   // Forgets the previous poll's key presses and scrolling, then gathers what happened since.
   void pollEvents();
+  // Typed characters reach the program only through input().buttonEvents, in order with the key
+  // and button events: call after a library that installed its own character callback (the
+  // ImGui GLFW backend, which would hand ImGui each character at once, ahead of the clicks and
+  // keys queued before it).
+  void takeBackCharacters();
   const WindowInput& input() const { return input_; }
 
   PixelSize framebufferSize() const;  // pixels: what to render at

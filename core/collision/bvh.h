@@ -51,6 +51,7 @@ class Bvh {
            (a.lo.z() <= b.hi.z()) & (b.lo.z() <= a.hi.z());
   }  // boxes in a leaf beyond which needsRebuild()
   int leafCount() const { return boxCount_; }
+  std::size_t heapBytes() const;  // util/heap_bytes.h (defined in sim/world_memory.cpp)
   bool empty() const { return leafCount() == 0; }
   const Aabb& bounds() const;  // box of the whole tree (empty box when the tree is empty)
 

@@ -73,6 +73,7 @@ class ContactStage {
   void clothTopologyChanged(int cloth, const ClothMesh& mesh, const TopologyChange& change);
 
   const ContactStats& stats() const { return stats_; }
+  std::size_t heapBytes() const;  // util/heap_bytes.h (defined in sim/world_memory.cpp)
   // Sharp-tool contacts of the latest step (cutting reads these).
   const std::vector<SharpContactRecord>& sharpRecords() const { return records_; }
 

@@ -58,6 +58,7 @@ class HeldContacts {
                       const std::vector<std::vector<HeldVertex>>& held, double h);
 
   std::size_t size() const { return contacts_.size(); }
+  std::size_t heapBytes() const;  // util/heap_bytes.h (defined in sim/world_memory.cpp)
 
  private:
   static constexpr int kGround = -1;

@@ -87,6 +87,7 @@ class PairCache {
                  double h, std::vector<PrimitivePair>& out, const VertexFlags* onlyTouching = nullptr);
 
   const PairCacheStats& stats() const { return stats_; }
+  std::size_t heapBytes() const;  // util/heap_bytes.h (defined in sim/world_memory.cpp)
 
  private:
   // What identifies a mesh's topology: an edit (a tear, a cut) bumps the revision; a mesh made

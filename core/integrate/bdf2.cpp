@@ -35,4 +35,19 @@ void Bdf2Integrator::advance(Cloth& cloth, const StepInputs& in, StageProfile& p
   hasHistory_ = true;
 }
 
+std::unique_ptr<Integrator> Bdf2Integrator::copyWithoutCaches(const SolverSpec& spec) const {
+  std::unique_ptr<Integrator> copy = makeIntegrator(spec);
+  // The history is physics (the next step's form), not a cache; spec names BDF2 unless a solver
+  // edit is being copied mid-change, which leaves the copy to restart as any integrator change does.
+  if (auto* bdf2 = dynamic_cast<Bdf2Integrator*>(copy.get())) {
+    bdf2->hasHistory_ = hasHistory_;
+    bdf2->stepLength_ = stepLength_;
+    bdf2->previousX_ = previousX_;
+    bdf2->previousV_ = previousV_;
+    bdf2->currentX_ = currentX_;
+    bdf2->currentV_ = currentV_;
+  }
+  return copy;
+}
+
 }  // namespace weft

@@ -41,6 +41,7 @@ class Bdf2Integrator final : public Integrator {
     hasHistory_ = false;
     solver_->topologyChanged(cloth, change);
   }
+  std::unique_ptr<Integrator> copyWithoutCaches(const SolverSpec& spec) const override;
 
  private:
   // The previous step is still valid history for a BDF2 step from the cloth's state (bdf2.h).

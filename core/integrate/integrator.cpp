@@ -18,4 +18,6 @@ std::unique_ptr<Integrator> makeIntegrator(const SolverSpec& spec) {
   return std::make_unique<LinearizedBackwardEuler>(spec);
 }
 
+std::unique_ptr<Integrator> Integrator::copyWithoutCaches(const SolverSpec& spec) const { return makeIntegrator(spec); }
+
 }  // namespace weft

@@ -75,6 +75,12 @@ class Integrator {
     (void)change;
     topologyChanged();
   }
+  // A new integrator of the kind `spec` makes, holding what the coming steps' physics read from
+  // this one (BDF2's two-step history) and none of its caches (the matrix pattern, a lagged
+  // factorization: the copy builds them at its first step, as after a solver edit). For
+  // World::clone: a copy of the world steps on from the same state without the memory of a
+  // factorization per copy.
+  virtual std::unique_ptr<Integrator> copyWithoutCaches(const SolverSpec& spec) const;
 };
 
 std::unique_ptr<Integrator> makeIntegrator(const SolverSpec& spec);

@@ -6,6 +6,7 @@
 //  - live edits (world_live_edits.cpp; sim/live_edit.h decides which edits of a scene qualify):
 //    they keep positions, velocities and the torn topology, and update scene() to match;
 //  - interaction (world_interaction.cpp): grabbing a vertex, throwing a ball, dragging a tool.
+#include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -59,6 +60,18 @@ class World {
   World& operator=(const World&) = delete;
 
   void step();  // advance by scene.solver.dt
+
+  // A copy that steps on exactly as this world would (world_clone.cpp): the cloths, obstacles,
+  // contact memory (held contacts, kept pairs), tear state and log, grab, dragged tools, time,
+  // statistics and the integrators' history, copied. The linear solvers' caches are not copied
+  // (a pattern, a lagged Cholesky factor: the copy builds them at its first step), so with the
+  // default lagged-Cholesky CG the copy's next solves differ from the original's within the CG
+  // tolerance; with block Jacobi or the direct solver they agree bit for bit. The editor's
+  // timeline keeps one per cached frame and continues from it after an edit (issue 21, item 7).
+  std::unique_ptr<World> clone() const;
+  // What a clone holds in memory, approximately (the contents of its vectors), for the timeline's
+  // memory budget.
+  std::size_t approximateBytes() const;
 
   // Live edits, applied between steps. Indices out of range throw std::out_of_range.
   // The material: elasticity, bending, density (the lumped masses are recomputed from the current,
@@ -127,6 +140,7 @@ class World {
 
  private:
   struct Impl;
+  explicit World(std::unique_ptr<Impl> impl);
   std::unique_ptr<Impl> impl_;
 };
 

@@ -12,6 +12,12 @@
 namespace weft {
 
 struct World::Impl {
+  Impl() = default;
+  // For World::clone (world_clone.cpp): every member below, deep. A member added here must be
+  // added there too (WorldClone tests step a clone beside its original and compare).
+  Impl(const Impl& other);
+  Impl& operator=(const Impl&) = delete;
+
   Scene scene;
   std::vector<Cloth> cloths;
   std::vector<std::unique_ptr<Integrator>> integrators;

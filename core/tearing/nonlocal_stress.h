@@ -37,6 +37,7 @@ namespace weft {
 
 class NonlocalStress {
  public:
+  std::size_t heapBytes() const;  // util/heap_bytes.h (defined in sim/world_memory.cpp)
   // `local` (per triangle sigma+, material frame) averaged into `out` within `radius` (m), where
   // some triangle within reach has a largest principal stress of at least `threshold` (N/m).
   void average(const ClothMesh& mesh, const std::vector<Mat2>& local, double radius, double threshold,

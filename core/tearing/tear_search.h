@@ -30,6 +30,7 @@ enum class CrackPlace { None, Tip, Lip };
 
 class TearSearch {
  public:
+  std::size_t heapBytes() const;  // util/heap_bytes.h (defined in sim/world_memory.cpp)
   // Every vertex looked at afresh (the start of a step).
   void start(const ClothMesh& mesh, const std::vector<TriangleCorners>& corners, const std::vector<Mat2>& stress,
              const TearTable& table, double weftAngleRad, const TearSearchSettings& settings, TearSearchCounts& counts);

@@ -74,6 +74,7 @@ class TearStage {
   std::vector<TopologyChange> run(std::vector<Cloth>& cloths, double time, double dt, StageProfile& profile);
   const std::vector<TearRecord>& log() const { return log_; }
   const TearStats& stats() const { return stats_; }
+  std::size_t heapBytes() const;  // util/heap_bytes.h (defined in sim/world_memory.cpp)
 
  private:
   // One cloth's step; returns what it changed.

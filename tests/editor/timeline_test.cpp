@@ -4,6 +4,7 @@
 // an earlier frame drops the frames after it and the simulation continues from there.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -79,6 +80,46 @@ TEST(FrameCache, StaysWithinItsBudgetDroppingTheOldestButFrameZero) {
   EXPECT_EQ(cache.nearest(4), 0);
 }
 
+// Past the budget the world copies go first, thinned evenly: every frame stays shown, the kept
+// copies spread over the timeline (frame 0's and the newest kept), and each frame resumes from
+// the nearest kept copy at or before it.
+TEST(FrameCache, WorldCopiesAreThinnedEvenlyBeforeAnyFrameGoes) {
+  test::TempDir dir;
+  EditorSession session(tearingSheet(dir));
+  const std::shared_ptr<const WorldSnapshot> one = session.view();
+  const std::shared_ptr<const World> world = session.frames().worldAt(0);
+  ASSERT_TRUE(world);
+  const std::size_t s = snapshotBytes(*one), w = world->approximateBytes();
+  EXPECT_GT(w, s) << "a world copy weighs more than what is drawn";
+  FrameCache cache(33 * s + 6 * w + w / 2);  // every frame, and room for six copies
+  for (long long f = 0; f <= 32; ++f) cache.add(f, one, world);
+  EXPECT_EQ(cache.frameCount(), 33u) << "no frame dropped while copies can go";
+  EXPECT_EQ(cache.worldCount(), 6u);
+  EXPECT_LE(cache.bytes(), cache.budgetBytes());
+  EXPECT_TRUE(cache.worldAt(0));
+  EXPECT_TRUE(cache.worldAt(32));
+  long long previous = 0, widest = 0;
+  for (long long f = 1; f <= 32; ++f) {
+    if (!cache.worldAt(f)) continue;
+    widest = std::max(widest, f - previous);
+    previous = f;
+  }
+  EXPECT_LE(widest, 2 * 32 / 5) << "spread evenly, not only the newest kept";
+  for (long long f = 0; f <= 32; ++f) {
+    const std::optional<long long> from = cache.worldFrameAtOrBefore(f);
+    ASSERT_TRUE(from);
+    EXPECT_LE(*from, f);
+    EXPECT_GT(*from, f - widest);
+  }
+  cache.setBudget(33 * s);  // no room for copies but frame 0's and the newest
+  EXPECT_EQ(cache.worldCount(), 2u);
+  cache.setBudget(10 * s);  // then frames go, the oldest first, frame 0 last
+  EXPECT_LE(cache.bytes(), cache.budgetBytes());
+  EXPECT_TRUE(cache.find(0));
+  EXPECT_TRUE(cache.find(32));
+  EXPECT_FALSE(cache.find(1));
+}
+
 TEST(Timeline, ScrubbingBackShowsACachedFrameWithoutSimulating) {
   test::TempDir dir;
   EditorSession session(tearingSheet(dir));
@@ -117,21 +158,126 @@ TEST(Timeline, AnEditOnAnEarlierFrameDropsTheFramesAfterItAndContinuesFromIt) {
   EXPECT_EQ(session.world().stepCount(), 2 * session.stepsPerFrame()) << "back at frame 2";
   session.advanceFrame(0.0);
   EXPECT_FALSE(session.shownFrame()) << "live again, at frame 2";
-  EXPECT_EQ(positionsHash(*session.view()), twoHash) << "rebuilt exactly (World::step is deterministic)";
+  EXPECT_EQ(positionsHash(*session.view()), twoHash) << "frame 2's state, copied";
   EXPECT_DOUBLE_EQ(session.world().scene().cloths[0].weftAngleDeg, 30.0);
   playFrames(session, 2);
   EXPECT_EQ(session.liveFrame(), 4);
   EXPECT_NE(positionsHash(*session.view()), fourHash) << "frame 4 again, simulated with the edit";
 }
 
-// A reset while the world is being rebuilt at an earlier frame abandons the rebuild: the session
-// is at t = 0 with only frame 0 cached, and nothing from the rebuild arrives later.
-TEST(Timeline, AResetDuringARewindAbandonsIt) {
+// The sheet with a linear solver whose answer depends only on the state (block Jacobi CG), so a
+// world resumed from a frame and one that never stopped agree bit for bit (World::clone).
+fs::path blockJacobiSheet(const test::TempDir& dir, const std::string& name) {
+  std::ifstream in(fs::path(WEFT_SOURCE_DIR) / "presets" / "scenes" / "ball-into-sheet-table4.1-cloth2.json");
+  json scene = json::parse(in);
+  scene["cloths"][0]["mesh"]["grid"]["resolution"] = json::array({10, 10});
+  scene["solver"]["linear_solver"]["preconditioner"] = "block_jacobi";
+  return dir.write("scenes/" + name, scene.dump(2));
+}
+
+// Item 7 as Houdini's playbar does it: an edit at frame k keeps frames 0..k as they were and the
+// simulation continues from frame k's own state, not from t = 0. The resumed world is a copy of
+// the one cached at frame k: its stage times (wall clock, never reproduced by simulating again)
+// are frame k's to the bit, and it steps on exactly as a world edited live at frame k does.
+TEST(Timeline, AnEditOnAnEarlierFrameResumesFromThatFramesStateWithoutResimulating) {
+  test::TempDir dir;
+  const fs::path file = blockJacobiSheet(dir, "scrubbed.json");
+  EditorSession scrubbed(file);
+  playFrames(scrubbed, 6);
+  const std::shared_ptr<const WorldSnapshot> frameOne = scrubbed.frames().find(1);
+  const std::shared_ptr<const WorldSnapshot> frameThree = scrubbed.frames().find(3);
+  ASSERT_TRUE(frameThree && scrubbed.frames().worldAt(3)) << "each cached frame keeps its world";
+  scrubbed.showFrame(3);
+  ASSERT_TRUE(scrubbed.edit(withWeftAngle(scrubbed.json(), 0, 30.0), "weft angle").accepted);
+  const World& resumed = scrubbed.world();
+  EXPECT_EQ(resumed.stepCount(), 3 * scrubbed.stepsPerFrame());
+  EXPECT_EQ(resumed.profile().totalMs, frameThree->profile.totalMs) << "frame 3's world, copied, not simulated again";
+  EXPECT_EQ(resumed.solverStats().linearIterations, frameThree->solver.linearIterations);
+  EXPECT_EQ(scrubbed.frames().lastFrame(), 3);
+  EXPECT_EQ(scrubbed.frames().find(1), frameOne) << "frames 0..3 are kept as they were";
+  EXPECT_EQ(scrubbed.frames().find(3), frameThree);
+  playFrames(scrubbed, 3);
+
+  // The same edit made live at frame 3, never going back.
+  EditorSession live(blockJacobiSheet(dir, "live.json"));
+  playFrames(live, 3);
+  ASSERT_TRUE(live.edit(withWeftAngle(live.json(), 0, 30.0), "weft angle").accepted);
+  playFrames(live, 3);
+  ASSERT_EQ(scrubbed.liveFrame(), 6);
+  ASSERT_EQ(live.liveFrame(), 6);
+  EXPECT_EQ(scrubbed.world().stateHash(), live.world().stateHash());
+  EXPECT_EQ(scrubbed.world().tearLog().size(), live.world().tearLog().size());
+  EXPECT_EQ(positionsHash(*scrubbed.frames().find(5)), positionsHash(*live.frames().find(5)));
+}
+
+// With a budget too small for a copy per frame, an edit on a frame whose copy was thinned away
+// steps the nearest earlier copy forward to it (with the changes made meanwhile, here a live edit
+// at frame 2), not the world from t = 0, and continues exactly as an edit made live there.
+TEST(Timeline, AFrameWithoutItsOwnCopyResumesFromTheNearestEarlierOne) {
+  test::TempDir dir;
+  EditorSession scrubbed(blockJacobiSheet(dir, "thinned.json"));
+  playFrames(scrubbed, 2);
+  ASSERT_TRUE(scrubbed.edit(withGravity(scrubbed.json(), Vec3(0.0, -5.0, 0.0)), "gravity").accepted);
+  playFrames(scrubbed, 7);
+  // Frame 9's sizes: at frame 0 the contact stage has built nothing yet.
+  const std::size_t s = snapshotBytes(*scrubbed.frames().find(9));
+  const std::size_t w = scrubbed.frames().worldAt(9)->approximateBytes();
+  scrubbed.setTimelineBudget(10 * s + 4 * w);  // frames 0..9, about four copies: 0, 9 and two between
+  ASSERT_EQ(scrubbed.frames().frameCount(), 10u);
+  ASSERT_LT(scrubbed.frames().worldCount(), 7u);
+  long long target = -1;
+  for (long long f = 8; f > 1 && target < 0; --f) {
+    if (!scrubbed.frames().worldAt(f) && scrubbed.frames().worldFrameAtOrBefore(f) > 0) target = f;
+  }
+  ASSERT_GT(target, 0) << "a frame without its own copy, a kept copy after frame 0 before it";
+  scrubbed.showFrame(target);
+  ASSERT_TRUE(scrubbed.edit(withWeftAngle(scrubbed.json(), 0, 30.0), "weft angle").accepted);
+  ASSERT_TRUE(scrubbed.lastResume());
+  EXPECT_EQ(scrubbed.lastResume()->frame, target);
+  EXPECT_EQ(scrubbed.lastResume()->from, *scrubbed.frames().worldFrameAtOrBefore(target));
+  EXPECT_GT(scrubbed.lastResume()->from, 0) << "from the nearest kept copy, not from t = 0";
+  EXPECT_LT(scrubbed.lastResume()->from, target);
+  EXPECT_EQ(scrubbed.world().stepCount(), target * scrubbed.stepsPerFrame());
+  playFrames(scrubbed, 2);
+
+  EditorSession live(blockJacobiSheet(dir, "live-thinned.json"));
+  playFrames(live, 2);
+  ASSERT_TRUE(live.edit(withGravity(live.json(), Vec3(0.0, -5.0, 0.0)), "gravity").accepted);
+  playFrames(live, static_cast<int>(target) - 2);
+  ASSERT_TRUE(live.edit(withWeftAngle(live.json(), 0, 30.0), "weft angle").accepted);
+  playFrames(live, 2);
+  ASSERT_EQ(scrubbed.liveFrame(), live.liveFrame());
+  EXPECT_EQ(scrubbed.world().stateHash(), live.world().stateHash());
+  EXPECT_EQ(scrubbed.world().tearLog().size(), live.world().tearLog().size());
+}
+
+// Going back twice to the same frame starts from the same state both times: the cached frame's
+// world is copied, never stepped itself.
+TEST(Timeline, ACachedFramesWorldIsNotChangedByResumingFromIt) {
+  test::TempDir dir;
+  EditorSession session(blockJacobiSheet(dir, "twice.json"));
+  playFrames(session, 4);
+  const std::shared_ptr<const World> frameTwo = session.frames().worldAt(2);
+  ASSERT_TRUE(frameTwo);
+  const std::uint64_t hash = frameTwo->stateHash();
+  session.showFrame(2);
+  ASSERT_TRUE(session.edit(withWeftAngle(session.json(), 0, 30.0), "weft angle").accepted);
+  playFrames(session, 2);
+  EXPECT_EQ(frameTwo->stateHash(), hash);
+  EXPECT_EQ(frameTwo->stepCount(), 2 * session.stepsPerFrame());
+  session.showFrame(2);
+  ASSERT_TRUE(session.edit(withWeftAngle(session.json(), 0, 0.0), "weft angle").accepted);
+  EXPECT_EQ(session.world().stateHash(), hash) << "back at frame 2's state (the weft edit moves no vertex)";
+}
+
+// A reset while the world is going back to an earlier frame: the session is at t = 0 with only
+// frame 0 cached, and nothing from the resume arrives later.
+TEST(Timeline, AResetWhileGoingBackToAFrameWins) {
   test::TempDir dir;
   EditorSession session(tearingSheet(dir));
   playFrames(session, 6);
   session.showFrame(5);
-  ASSERT_TRUE(session.edit(withWeftAngle(session.json(), 0, 30.0), "weft angle").accepted);  // rewinds to 5
+  ASSERT_TRUE(session.edit(withWeftAngle(session.json(), 0, 30.0), "weft angle").accepted);  // back to 5
   session.reset();
   EXPECT_EQ(session.world().stepCount(), 0);
   session.advanceFrame(0.0);

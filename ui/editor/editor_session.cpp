@@ -85,14 +85,15 @@ void EditorSession::rebuildWorld() {
   auto world = std::make_unique<World>(scene_);
   if (worker_) {
     collectSteps();
-    worker_->attach(std::move(world), scene_);
+    worker_->attach(std::move(world));
   } else {
-    worker_ = std::make_unique<StepWorker>(std::move(world), scene_);
+    worker_ = std::make_unique<StepWorker>(std::move(world));
   }
   liveScene_ = scene_;
   frameSteps_ = std::max<long long>(weft::stepsPerFrame(scene_), 1);
   frames_.clear();
-  frames_.add(0, worker_->snapshot());
+  frames_.add(0, worker_->snapshot(), worker_->copyWhenIdle());
+  lastResume_.reset();
   shownFrame_.reset();
   rewinding_ = false;
   ++worldGeneration_;
@@ -123,14 +124,20 @@ std::shared_ptr<const WorldSnapshot> EditorSession::view() const {
 }
 
 void EditorSession::applyToWorld(std::function<void(World&)> change) {
-  if (shownFrame_ && !rewinding_ && *shownFrame_ < liveFrame()) {
-    // Changing the world while looking at an earlier frame: it goes back to that frame, with the
-    // scene as the document has it now, and continues from there.
-    worker_->rewindTo(*shownFrame_ * frameSteps_);
+  const std::optional<long long> from =
+      shownFrame_ && !rewinding_ && *shownFrame_ < liveFrame() ? frames_.worldFrameAtOrBefore(*shownFrame_) : std::nullopt;
+  if (from) {
+    // Changing the world while looking at an earlier frame: the world goes back to that frame's
+    // own state (a copy of the world kept with it, or with the nearest frame before it, stepped
+    // forward), with the scene as the document has it now, and continues from there.
+    worker_->resumeFrom(frames_.worldAt(*from), *shownFrame_ * frameSteps_);
+    lastResume_ = Resume{*shownFrame_, *from};
     worker_->apply([scene = liveScene_](World& world) { applyLiveEdits(world, scene); });
     frames_.invalidateAfter(*shownFrame_);
     rewinding_ = true;
     stopped_ = false;
+  } else if (shownFrame_ && !rewinding_) {
+    shownFrame_.reset();  // a frame kept without its world: the change lands on the live world, shown
   }
   worker_->apply(std::move(change));
 }
@@ -159,7 +166,7 @@ void EditorSession::collectSteps() {
     frames_.invalidateAfter(*result->rewoundTo / frameSteps_);
     meteredTime_ = worker_->snapshot()->time;
   }
-  for (const auto& [frame, snapshot] : result->frames) frames_.add(frame, snapshot);
+  for (const StepResult::Frame& frame : result->frames) frames_.add(frame.frame, frame.snapshot, frame.world);
   if (result->unhealthy && !unhealthy_) {
     unhealthy_ = result->unhealthy;
     status = "warning: " + healthWarning(*unhealthy_);

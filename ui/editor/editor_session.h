@@ -71,6 +71,14 @@ class EditorSession {
 
   // The timeline: output frames simulated since the last reset, cached (frame_cache.h).
   const FrameCache& frames() const { return frames_; }
+  void setTimelineBudget(std::size_t bytes) { frames_.setBudget(bytes); }
+  // The last time an edit went back to an earlier frame: the frame, and the frame whose kept
+  // world was copied and stepped forward to it (the same frame when it kept its own).
+  struct Resume {
+    long long frame = 0;
+    long long from = 0;
+  };
+  const std::optional<Resume>& lastResume() const { return lastResume_; }
   long long stepsPerFrame() const { return frameSteps_; }
   // The frame the world is at (whole frames of steps, as far as the worker got).
   long long liveFrame() const;
@@ -138,7 +146,8 @@ class EditorSession {
   FrameCache frames_;
   long long frameSteps_ = 1;
   std::optional<long long> shownFrame_;  // the timeline shows this cached frame (none: live)
-  bool rewinding_ = false;               // until the worker reports the rewind done
+  std::optional<Resume> lastResume_;
+  bool rewinding_ = false;               // until the worker reports the world back at the shown frame
   double frameClock_ = 0.0;              // playing through cached frames: the fraction of a frame
   bool resetPending_ = false;
   std::optional<Refusal> refusal_;

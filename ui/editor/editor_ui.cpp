@@ -160,6 +160,7 @@ void drawEditorUi(EditorSession& session, EditorUi& ui) {
   drawTearTablePanel(session, ui.panels);
   placeNext(right + 256, top + 408, 204, 260);
   drawWeftPanel(session, ui.panels);
+  drawBrowserPanel(session, ui.panels);
   drawStatusBar(session);
   drawStartHint(session);
   // One modal at a time: quitting or opening first; a pending autosave is not lost by either.

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <iterator>
+#include <vector>
 
 namespace weft::editor {
 
@@ -26,22 +27,67 @@ std::size_t snapshotBytes(const WorldSnapshot& snapshot) {
   return bytes;
 }
 
-void FrameCache::add(long long frame, std::shared_ptr<const WorldSnapshot> snapshot) {
+void FrameCache::add(long long frame, std::shared_ptr<const WorldSnapshot> snapshot, std::shared_ptr<const World> world) {
   if (!snapshot) return;
   if (auto it = frames_.find(frame); it != frames_.end()) {
-    bytes_ -= it->second.bytes;
+    bytes_ -= it->second.snapshotBytes + it->second.worldBytes;
     frames_.erase(it);
   }
-  const std::size_t size = snapshotBytes(*snapshot);
-  frames_.emplace(frame, Entry{std::move(snapshot), size});
-  bytes_ += size;
-  // Over budget: the oldest frames go first, frame 0 last, the newest never.
+  Entry entry;
+  entry.snapshotBytes = snapshotBytes(*snapshot);
+  entry.worldBytes = world ? world->approximateBytes() : 0;
+  entry.snapshot = std::move(snapshot);
+  entry.world = std::move(world);
+  bytes_ += entry.snapshotBytes + entry.worldBytes;
+  frames_.emplace(frame, std::move(entry));
+  fitBudget();
+}
+
+void FrameCache::setBudget(std::size_t budgetBytes) {
+  budgetBytes_ = budgetBytes;
+  fitBudget();
+}
+
+void FrameCache::fitBudget() {
+  while (bytes_ > budgetBytes_ && dropOneWorld()) {
+  }
+  // No world copy left to drop: the oldest frames go first, frame 0 last, the newest never.
   while (bytes_ > budgetBytes_ && frames_.size() > 1) {
     auto oldest = frames_.begin();
     if (oldest->first == 0 && frames_.size() > 2) oldest = std::next(oldest);
-    bytes_ -= oldest->second.bytes;
+    bytes_ -= oldest->second.snapshotBytes + oldest->second.worldBytes;
     frames_.erase(oldest);
   }
+}
+
+bool FrameCache::dropOneWorld() {
+  // Kept copies in frame order; frame 0's and the newest frame's stay.
+  std::vector<std::map<long long, Entry>::iterator> kept;
+  for (auto it = frames_.begin(); it != frames_.end(); ++it) {
+    if (it->second.world) kept.push_back(it);
+  }
+  const long long newest = frames_.empty() ? -1 : frames_.rbegin()->first;
+  std::optional<std::size_t> drop;
+  long long smallestGap = 0;
+  for (std::size_t i = 0; i < kept.size(); ++i) {
+    const long long frame = kept[i]->first;
+    if (frame == 0 || frame == newest) continue;
+    // The gap its neighbours would leave between them (the first kept copy's left neighbour is
+    // the timeline's start); the smallest gap goes, the older one on a tie.
+    const long long before = i > 0 ? kept[i - 1]->first : frames_.begin()->first;
+    const long long after = i + 1 < kept.size() ? kept[i + 1]->first : newest;
+    const long long gap = after - before;
+    if (!drop || gap < smallestGap) {
+      drop = i;
+      smallestGap = gap;
+    }
+  }
+  if (!drop) return false;
+  Entry& entry = kept[*drop]->second;
+  bytes_ -= entry.worldBytes;
+  entry.world.reset();
+  entry.worldBytes = 0;
+  return true;
 }
 
 std::shared_ptr<const WorldSnapshot> FrameCache::find(long long frame) const {
@@ -49,9 +95,28 @@ std::shared_ptr<const WorldSnapshot> FrameCache::find(long long frame) const {
   return it == frames_.end() ? nullptr : it->second.snapshot;
 }
 
+std::shared_ptr<const World> FrameCache::worldAt(long long frame) const {
+  const auto it = frames_.find(frame);
+  return it == frames_.end() ? nullptr : it->second.world;
+}
+
+std::optional<long long> FrameCache::worldFrameAtOrBefore(long long frame) const {
+  for (auto it = frames_.upper_bound(frame); it != frames_.begin();) {
+    --it;
+    if (it->second.world) return it->first;
+  }
+  return std::nullopt;
+}
+
+std::size_t FrameCache::worldCount() const {
+  std::size_t count = 0;
+  for (const auto& [frame, entry] : frames_) count += entry.world ? 1 : 0;
+  return count;
+}
+
 void FrameCache::invalidateAfter(long long frame) {
   for (auto it = frames_.upper_bound(frame); it != frames_.end();) {
-    bytes_ -= it->second.bytes;
+    bytes_ -= it->second.snapshotBytes + it->second.worldBytes;
     it = frames_.erase(it);
   }
 }

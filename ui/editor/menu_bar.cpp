@@ -19,6 +19,9 @@ void trySave(EditorSession& session) {
 
 void drawFileMenu(EditorSession& session, EditorUi& ui) {
   if (!ImGui::BeginMenu("File")) return;
+  if (ImGui::MenuItem("Browse scenes and presets...", nullptr, false, ui.panels.browser != nullptr)) {
+    ui.panels.browserOpen = true;
+  }
   if (ImGui::MenuItem("Open...")) ui.openDialog = true;
   if (ImGui::MenuItem("Save", "Ctrl+S")) trySave(session);
   if (ImGui::MenuItem("Save as...")) ui.saveAsDialog = true;

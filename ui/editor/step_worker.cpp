@@ -8,16 +8,15 @@
 
 namespace weft::editor {
 
-StepWorker::StepWorker(std::unique_ptr<World> world, Scene builtFrom)
+StepWorker::StepWorker(std::unique_ptr<World> world)
     : world_(std::move(world)),
-      builtFrom_(std::move(builtFrom)),
-      frameSteps_(std::max<long long>(stepsPerFrame(builtFrom_), 1)),
+      frameSteps_(std::max<long long>(stepsPerFrame(world_->scene()), 1)),
       snapshot_(snapshotOf(*world_)),
       health_(std::in_place, *world_, frameSteps_),
       thread_([this] { run(); }) {}
 
 StepWorker::~StepWorker() {
-  abandonRewind_ = true;
+  abandonResume_ = true;
   {
     std::lock_guard lock(mutex_);
     quit_ = true;
@@ -26,16 +25,15 @@ StepWorker::~StepWorker() {
   thread_.join();
 }
 
-void StepWorker::attach(std::unique_ptr<World> world, Scene builtFrom) {
-  abandonRewind_ = true;
+void StepWorker::attach(std::unique_ptr<World> world) {
+  abandonResume_ = true;
   std::unique_lock lock(mutex_);
   owed_ = 0;  // steps of the old world are not wanted: only the one running is waited for
   held_ = false;
-  rewindTo_.reset();
+  resumeFrom_.reset();
   idle_.wait(lock, [&] { return !running_; });
   std::unique_ptr<World> old = std::exchange(world_, std::move(world));
-  builtFrom_ = std::move(builtFrom);
-  frameSteps_ = std::max<long long>(stepsPerFrame(builtFrom_), 1);
+  frameSteps_ = std::max<long long>(stepsPerFrame(world_->scene()), 1);
   changeLog_.clear();
   queued_.clear();
   result_ = StepResult{};
@@ -43,18 +41,22 @@ void StepWorker::attach(std::unique_ptr<World> world, Scene builtFrom) {
   snapshotStale_ = false;
   health_.emplace(*world_, frameSteps_);
   rebaseHealth_ = false;
-  abandonRewind_ = false;
+  abandonResume_ = false;
 }
 
-void StepWorker::rewindTo(long long step) {
+void StepWorker::resumeFrom(std::shared_ptr<const World> frameWorld, long long step) {
+  if (!frameWorld) return;
   {
     std::lock_guard lock(mutex_);
-    rewindTo_ = std::max(step, 0LL);
+    resumeStep_ = std::max(step, frameWorld->stepCount());
+    resumeFrom_ = std::move(frameWorld);
     owed_ = 0;
     held_ = false;
   }
   wake_.notify_all();
 }
+
+std::shared_ptr<const World> StepWorker::copyWhenIdle() { return idleWorld().clone(); }
 
 void StepWorker::applyLogged(std::function<void(World&)> change) {
   change(*world_);
@@ -74,7 +76,7 @@ void StepWorker::ask(long long steps, long long maxOwed) {
 
 long long StepWorker::owed() const {
   std::lock_guard lock(mutex_);
-  return owed_ + (rewindTo_ ? 1 : 0);  // a rewind counts as work owed
+  return owed_ + (resumeFrom_ ? 1 : 0);  // a resume counts as work owed
 }
 
 void StepWorker::wait() {
@@ -122,7 +124,7 @@ const World& StepWorker::idleWorld() {
 const World& StepWorker::worldBetweenSteps() {
   std::unique_lock lock(mutex_);
   held_ = true;
-  idle_.wait(lock, [&] { return !running_ && !rewindTo_; });
+  idle_.wait(lock, [&] { return !running_ && !resumeFrom_; });
   applyQueued(lock);  // the user's earlier changes come first
   return *world_;
 }
@@ -157,10 +159,10 @@ void StepWorker::applyQueued(std::unique_lock<std::mutex>& lock) {
 void StepWorker::run() {
   std::unique_lock lock(mutex_);
   for (;;) {
-    wake_.wait(lock, [&] { return quit_ || rewindTo_ || (owed_ > 0 && !held_); });
+    wake_.wait(lock, [&] { return quit_ || resumeFrom_ || (owed_ > 0 && !held_); });
     if (quit_) return;
-    if (rewindTo_) {
-      rewind(lock);
+    if (resumeFrom_) {
+      resume(lock);
       continue;
     }
     applyQueued(lock);
@@ -180,11 +182,13 @@ void StepWorker::run() {
       health_.reset();  // reported once, as `weft run` reports it
     }
     std::shared_ptr<const WorldSnapshot> next = snapshotOf(world, previous.get());
+    const bool frameEnds = world.stepCount() % frameSteps_ == 0;
+    std::shared_ptr<const World> frameWorld = frameEnds ? std::shared_ptr<const World>(world.clone()) : nullptr;
     lock.lock();
     running_ = false;
     snapshot_ = std::move(next);
     result_.stepMs.push_back(1000.0 * seconds);
-    if (world.stepCount() % frameSteps_ == 0) result_.frames.emplace_back(world.stepCount() / frameSteps_, snapshot_);
+    if (frameEnds) result_.frames.push_back({world.stepCount() / frameSteps_, snapshot_, std::move(frameWorld)});
     if (unhealthy) result_.unhealthy = std::move(unhealthy);
     --owed_;
     if (!finite) {
@@ -196,42 +200,50 @@ void StepWorker::run() {
   }
 }
 
-// Runs unlocked while it steps (running_): the UI reads the snapshot meanwhile and queues its
-// changes, which land on the rebuilt world.
-void StepWorker::rewind(std::unique_lock<std::mutex>& lock) {
-  const long long target = *rewindTo_;
+// Copies the frame's world, and steps the copy forward to the step asked for with the logged
+// changes replayed where they landed, unlocked (running_): the UI reads the snapshot meanwhile
+// and queues its changes, which land on the result. The cached frame's own world stays as it is,
+// for the next time the timeline goes back there.
+void StepWorker::resume(std::unique_lock<std::mutex>& lock) {
+  const std::shared_ptr<const World> from = std::move(resumeFrom_);
+  resumeFrom_.reset();
+  const long long target = resumeStep_;
+  // Changes that landed after the copy was taken: after its step (the copy is taken right after
+  // the step, before any change lands there), up to the target.
   std::vector<std::pair<long long, std::function<void(World&)>>> log = std::move(changeLog_);
   changeLog_.clear();
   running_ = true;
   lock.unlock();
-  auto world = std::make_unique<World>(builtFrom_);
+  std::unique_ptr<World> world = from->clone();
   std::size_t next = 0;
+  while (next < log.size() && log[next].first < world->stepCount()) ++next;  // already in the copy
+  std::vector<std::pair<long long, std::function<void(World&)>>> kept(log.begin(), log.begin() + next);
   for (;;) {
-    for (; next < log.size() && log[next].first == world->stepCount(); ++next) log[next].second(*world);
-    if (world->stepCount() >= target || abandonRewind_) break;
+    for (; next < log.size() && log[next].first == world->stepCount(); ++next) {
+      log[next].second(*world);
+      kept.push_back(log[next]);
+    }
+    if (world->stepCount() >= target || abandonResume_) break;
     world->step();
   }
-  if (abandonRewind_) {  // a reset or the end of the session: the old world stays until replaced
+  if (abandonResume_) {  // a reset or the end of the session: the old world stays until replaced
     lock.lock();
     changeLog_ = std::move(log);
-    rewindTo_.reset();
     running_ = false;
     idle_.notify_all();
     return;
   }
-  log.resize(next);  // what landed later is gone with the frames after this one
   std::shared_ptr<const WorldSnapshot> snapshot = snapshotOf(*world);
   lock.lock();
+  running_ = false;
   std::unique_ptr<World> old = std::exchange(world_, std::move(world));
-  changeLog_ = std::move(log);
+  changeLog_ = std::move(kept);  // what landed later is gone with the frames after this one
   snapshot_ = std::move(snapshot);
   snapshotStale_ = false;
   health_.emplace(*world_, frameSteps_);
   rebaseHealth_ = false;
-  result_.frames.clear();  // stepped before the rewind: gone with it
+  result_.frames.clear();  // stepped before the resume: gone with it
   result_.rewoundTo = world_->stepCount();
-  rewindTo_.reset();
-  running_ = false;
   applyQueued(lock);
   idle_.notify_all();
   lock.unlock();

@@ -13,10 +13,14 @@
 // and reports its first failure; the user's changes (a grab pulls, a thrown ball brings energy,
 // an edit of the wind) restart its energy baseline, since they are input the check cannot see.
 //
-// Rewinding (the timeline, item 7): every change applied is logged with the step it landed
-// after, so the world at an earlier step is rebuilt exactly: a fresh world from the scene it was
-// built from, stepped to there with the logged changes replayed where they landed (World::step
-// is deterministic). The log after that step is dropped: the simulation goes on from there.
+// Resuming (the timeline, item 7): every output frame stepped comes with a copy of the world
+// at its end (World::clone), which the timeline caches beside the frame's snapshot (thinned
+// evenly when memory runs short, frame_cache.h). Going back to a cached frame puts a copy of that
+// frame's world in place of the live one, made on the worker: the simulation continues from the
+// frame's own state, nothing is re-simulated. When that frame's copy was thinned away, the
+// nearest earlier copy is stepped forward to the frame, every change applied since replayed
+// where it landed (each change is logged with the step it landed after; World::step is
+// deterministic), so the world is the frame's exactly; never from t = 0 unless that is nearest.
 //
 // Determinism: the worker runs World::step exactly as `weft run` does, one after another; only
 // when an edit lands (between which two steps) depends on timing, as it does for any user.
@@ -42,28 +46,36 @@ struct StepResult {
   std::vector<double> stepMs;          // wall ms of each step taken
   std::optional<double> nonFiniteAt;   // s: stepping stopped on a non-finite state at this time
   std::optional<HealthFailure> unhealthy;  // the health check's first failure (stepping goes on)
-  // The snapshot at the end of every output frame stepped (for the timeline), frame number first.
-  std::vector<std::pair<long long, std::shared_ptr<const WorldSnapshot>>> frames;
-  std::optional<long long> rewoundTo;  // a rewind finished: the world is back at this step
+  // Every output frame stepped (for the timeline): its snapshot and a copy of the world to resume from.
+  struct Frame {
+    long long frame = 0;
+    std::shared_ptr<const WorldSnapshot> snapshot;
+    std::shared_ptr<const World> world;
+  };
+  std::vector<Frame> frames;
+  std::optional<long long> rewoundTo;  // a resume finished: the world is back at this step
 };
 
 class StepWorker {
  public:
-  // Starts the thread, idle, on `world`, built from `builtFrom` (kept for rewinds).
-  StepWorker(std::unique_ptr<World> world, Scene builtFrom);
-  // Drops the owed steps after the one running (and a rewind in progress), and joins the thread.
+  // Starts the thread, idle, on `world`.
+  explicit StepWorker(std::unique_ptr<World> world);
+  // Drops the owed steps after the one running (and a resume in progress), and joins the thread.
   ~StepWorker();
   StepWorker(const StepWorker&) = delete;
   StepWorker& operator=(const StepWorker&) = delete;
 
   // Replaces the world (a reset built a new one): waits for the step in flight, drops the owed
-  // steps, a rewind in progress, the queued edits (they were for the old world) and the
+  // steps, a resume in progress, the queued edits (they were for the old world) and the
   // uncollected result.
-  void attach(std::unique_ptr<World> world, Scene builtFrom);
+  void attach(std::unique_ptr<World> world);
 
-  // Rebuilds the world as it was after `step` (see above) on the worker and returns at once;
-  // owed steps are dropped, changes applied after the call land on the rebuilt world.
-  void rewindTo(long long step);
+  // Replaces the world by a copy of `frameWorld` (a cached frame's, see above) stepped forward to
+  // `step` (none: as it is), on the worker, and returns at once; owed steps are dropped, changes
+  // applied after the call land on the result.
+  void resumeFrom(std::shared_ptr<const World> frameWorld, long long step);
+  // A copy of the world as it is now, once the owed steps are taken (frame 0 of the timeline).
+  std::shared_ptr<const World> copyWhenIdle();
 
   // Asks for `steps` more steps and returns at once. The steps still owed never exceed
   // `maxOwed`: when the worker is that far behind, further steps are dropped, not owed (a heavy
@@ -94,32 +106,32 @@ class StepWorker {
  private:
   void run();
   void applyQueued(std::unique_lock<std::mutex>& lock);
-  bool uiOwnsWorld() const { return !running_ && !rewindTo_ && (owed_ == 0 || held_); }  // under mutex_
-  bool idle() const { return !running_ && !rewindTo_ && owed_ == 0; }                    // under mutex_
+  bool uiOwnsWorld() const { return !running_ && !resumeFrom_ && (owed_ == 0 || held_); }  // under mutex_
+  bool idle() const { return !running_ && !resumeFrom_ && owed_ == 0; }                    // under mutex_
   void applyLogged(std::function<void(World&)> change);  // under mutex_, the world not stepping
-  void rewind(std::unique_lock<std::mutex>& lock);
+  void resume(std::unique_lock<std::mutex>& lock);
 
   mutable std::mutex mutex_;
   std::condition_variable wake_;  // steps owed, or quit
   std::condition_variable idle_;  // a step ended
   std::unique_ptr<World> world_;
-  Scene builtFrom_;
   long long frameSteps_ = 1;  // steps of an output frame
+  std::shared_ptr<const World> resumeFrom_;  // asked for, not yet done
+  long long resumeStep_ = 0;                 // ... stepped forward to this step
   std::vector<std::pair<long long, std::function<void(World&)>>> changeLog_;  // step landed after, change
-  std::optional<long long> rewindTo_;  // asked for, not yet done
   long long owed_ = 0;  // steps asked for and not yet taken (the one running included)
   StepResult result_;
   std::vector<std::function<void(World&)>> queued_;
   std::shared_ptr<const WorldSnapshot> snapshot_;
-  bool snapshotStale_ = false;
+  bool snapshotStale_ = false;  // the UI thread changed the world since the snapshot was taken
   std::optional<HealthCheck> health_;  // none after its first failure, until attach()
   bool rebaseHealth_ = false;          // the UI changed the world: the check starts afresh
   bool running_ = false;  // a step is running (unlocked) on the worker
-  bool held_ = false;     // worldBetweenSteps: no step starts until release()  // the UI thread changed the world since the snapshot was taken
+  bool held_ = false;     // worldBetweenSteps: no step starts until release()
   bool quit_ = false;
-  // A reset or the end of the session abandons a rewind in progress (it may be re-simulating
-  // many frames) instead of waiting for it; read by the worker between the rewind's steps.
-  std::atomic<bool> abandonRewind_{false};
+  // A reset or the end of the session abandons a resume in progress (it may be stepping a copy
+  // forward) instead of waiting for it; read by the worker between the resume's steps.
+  std::atomic<bool> abandonResume_{false};
   std::thread thread_;  // last: started once everything above is ready
 };
 

@@ -16,6 +16,8 @@
 
 namespace weft::editor {
 
+class SceneBrowser;
+
 // Where each named widget was last drawn, for tests that drive the panels with simulated input
 // (ImGui 1.86 has no test engine). Panels record into it only when the state carries one.
 struct WidgetProbe {
@@ -47,6 +49,8 @@ struct PanelState {
   int recordFrames = 120;
   bool recordVideo = true;
   std::filesystem::path openRequest;  // a scene the user chose to open (the editor asks about unsaved edits first)
+  SceneBrowser* browser = nullptr;    // the browser's scenes and thumbnails (owned by the app; none: no browser)
+  bool browserOpen = false;           // File > Browse scenes and presets
 };
 
 // Records the last drawn item under `id` when a probe is attached.
@@ -68,5 +72,6 @@ void drawWeftPanel(EditorSession& session, PanelState& state);
 void drawSolverPanel(EditorSession& session, PanelState& state);
 void drawPlaybackPanel(EditorSession& session, PanelState& state);
 void drawToolsPanel(EditorSession& session, PanelState& state);
+void drawBrowserPanel(EditorSession& session, PanelState& state);
 
 }  // namespace weft::editor

@@ -25,8 +25,9 @@ void drawTimeline(EditorSession& session, PanelState& state) {
   }
   recordWidget(state, "play/timeline");
   constexpr double kMiB = 1024.0 * 1024.0;
-  ImGui::TextDisabled("cache: %zu frames, %.1f of %.0f MB", frames.frameCount(), frames.bytes() / kMiB,
-                      frames.budgetBytes() / kMiB);
+  // Every frame is shown from the cache; an edit resumes from the nearest one keeping its world.
+  ImGui::TextDisabled("cache: %zu frames (%zu to resume from), %.1f of %.0f MB", frames.frameCount(),
+                      frames.worldCount(), frames.bytes() / kMiB, frames.budgetBytes() / kMiB);
   if (const std::optional<long long> shown = session.shownFrame()) {
     if (ImGui::SmallButton("Live")) session.showLive();
     recordWidget(state, "play/live");

@@ -21,18 +21,27 @@ std::vector<std::string> presetNames(const std::vector<std::filesystem::path>& f
   return names;
 }
 
-std::string sceneDescription(const std::filesystem::path& sceneFile) {
-  std::ifstream in(sceneFile, std::ios::binary);
+namespace {
+
+// A top-level string field of a JSON file; empty when it is missing or the file does not read.
+std::string topLevelString(const std::filesystem::path& file, const char* key) {
+  std::ifstream in(file, std::ios::binary);
   if (!in) return "";
   std::ostringstream text;
   text << in.rdbuf();
   try {
-    const nlohmann::json scene = parseJsonText(text.str(), sceneFile.string(), JsonTextOptions{.allowComments = true});
-    const auto it = scene.is_object() ? scene.find("description") : scene.end();
-    return it != scene.end() && it->is_string() ? it->get<std::string>() : "";
+    const nlohmann::json j = parseJsonText(text.str(), file.string(), JsonTextOptions{.allowComments = true});
+    const auto it = j.is_object() ? j.find(key) : j.end();
+    return it != j.end() && it->is_string() ? it->get<std::string>() : "";
   } catch (const std::exception&) {
     return "";
   }
 }
+
+}  // namespace
+
+std::string sceneDescription(const std::filesystem::path& sceneFile) { return topLevelString(sceneFile, "description"); }
+
+std::string presetSource(const std::filesystem::path& presetFile) { return topLevelString(presetFile, "source"); }
 
 }  // namespace weft::editor

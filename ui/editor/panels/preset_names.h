@@ -11,5 +11,7 @@ std::vector<std::string> presetNames(const std::vector<std::filesystem::path>& f
 // A scene file's "description" (one or two sentences on what it shows), for the scene list; empty
 // when the file cannot be read strictly or has none. Never throws.
 std::string sceneDescription(const std::filesystem::path& sceneFile);
+// A material preset's "source" (where its numbers come from), likewise.
+std::string presetSource(const std::filesystem::path& presetFile);
 
 }  // namespace weft::editor

@@ -144,6 +144,11 @@ void drawScenePanel(EditorSession& session, PanelState& state) {
   if (ImGui::Button("Redo")) session.redo();
   recordWidget(state, "scene/redo");
   ImGui::EndDisabled();
+  if (state.browser != nullptr) {
+    ImGui::SameLine();
+    if (ImGui::Button("Browse...")) state.browserOpen = true;  // thumbnails and descriptions
+    recordWidget(state, "scene/browse");
+  }
 
   ImGui::SetNextItemWidth(220);
   if (ImGui::BeginCombo("open", session.document().file().filename().string().c_str())) {

@@ -1,0 +1,172 @@
+// The scene and preset browser (issue 21, item 8): each scene of the browsed folders with its
+// description and a thumbnail of how it starts, rendered by the editor's renderer once (one a
+// frame), cached under the user's cache folder by the scene file's content, read back from there
+// next time, and drawn again only when the file changes. Headless (EGL), as the panel tests run.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+
+#include "editor/scene_browser.h"
+#include "editor/thumbnail_cache.h"
+#include "png_reader.h"
+#include "scene_renderer.h"
+#include "support/editor_panels_fixture.h"
+
+namespace weft::editor {
+namespace {
+
+namespace fs = std::filesystem;
+
+class SceneBrowserTest : public test::EditorPanelsTest {
+ protected:
+  // The fixture's scene (a small ball-into-sheet) and a small hanging sheet beside it.
+  fs::path folder() const { return scene_.parent_path(); }
+  void addHangingSheet() { hangingSheet_ = test::copyScene(dir_, "hanging-sheet", 8); }
+  static int readyCount(const SceneBrowser& browser) {
+    int ready = 0;
+    for (const BrowserScene& s : browser.scenes()) ready += s.thumbnail == BrowserScene::Thumbnail::Ready ? 1 : 0;
+    return ready;
+  }
+  static void makeAll(SceneBrowser& browser, ui::SceneRenderer& renderer) {
+    for (int i = 0; i < 10 && browser.makeNextThumbnail(renderer); ++i) {
+    }
+  }
+  fs::path hangingSheet_;
+};
+
+TEST(ThumbnailCache, KeyFollowsTheFilesBytesAndTheFolderFollowsTheEnvironment) {
+  test::TempDir dir;
+  const fs::path a = dir.write("a.json", R"({"name": "a"})");
+  const fs::path b = dir.write("b.json", R"({"name": "a"})");
+  const fs::path c = dir.write("c.json", R"({"name": "c"})");
+  EXPECT_EQ(ThumbnailCache::keyOf(a), ThumbnailCache::keyOf(b)) << "same bytes, same thumbnail";
+  EXPECT_NE(ThumbnailCache::keyOf(a), ThumbnailCache::keyOf(c));
+  EXPECT_FALSE(ThumbnailCache::keyOf(dir.path() / "missing.json"));
+  EXPECT_EQ(fnv1aHex(""), "cbf29ce484222325") << "FNV-1a 64's offset basis";
+  EXPECT_EQ(fnv1aHex("a"), "af63dc4c8601ec8c") << "the published test vector";
+  setenv("WEFT_CACHE_DIR", dir.path().c_str(), 1);
+  EXPECT_EQ(defaultThumbnailFolder(), dir.path() / "thumbnails");
+  unsetenv("WEFT_CACHE_DIR");
+}
+
+TEST_F(SceneBrowserTest, AThumbnailIsRenderedOnceAndCachedByTheSceneFilesContent) {
+  addHangingSheet();
+  const ThumbnailCache cache(dir_.path() / "cache");
+  ui::SceneRenderer renderer;
+  {
+    SceneBrowser browser({folder()}, cache);
+    ASSERT_EQ(browser.scenes().size(), 2u);
+    EXPECT_EQ(readyCount(browser), 0) << "nothing is drawn until asked";
+    EXPECT_TRUE(browser.makeNextThumbnail(renderer));
+    EXPECT_EQ(readyCount(browser), 1) << "one a call (a frame)";
+    makeAll(browser, renderer);
+    EXPECT_FALSE(browser.pending());
+    EXPECT_EQ(browser.rendered(), 2);
+    EXPECT_EQ(browser.fromCache(), 0);
+    for (const BrowserScene& scene : browser.scenes()) {
+      EXPECT_EQ(scene.thumbnail, BrowserScene::Thumbnail::Ready) << scene.name << ": " << scene.problem;
+      EXPECT_FALSE(scene.description.empty()) << scene.name;
+      const fs::path png = cache.pathFor(scene.key);
+      ASSERT_TRUE(fs::exists(png)) << png;
+      const std::optional<ui::RgbaImage> image = ui::readPng(png);
+      ASSERT_TRUE(image);
+      EXPECT_EQ(image->width, kThumbnailWidth);
+      EXPECT_EQ(image->height, kThumbnailHeight);
+      // A picture of the scene: the cloth covers part of it, not only the background's colour
+      // (the top-left corner's).
+      std::size_t drawn = 0;
+      for (std::size_t i = 0; i + 3 < image->rgba.size(); i += 4) {
+        for (int c = 0; c < 3; ++c) {
+          if (std::abs(image->rgba[i + c] - image->rgba[c]) > 24) {
+            ++drawn;
+            break;
+          }
+        }
+      }
+      EXPECT_GT(drawn, image->rgba.size() / 4 / 50) << scene.name << ": under 2% of the pixels drawn";
+      if (const char* keep = std::getenv("WEFT_KEEP_THUMBNAILS"); keep != nullptr && *keep != '\0') {
+        fs::create_directories(keep);
+        fs::copy_file(png, fs::path(keep) / (scene.name + ".png"), fs::copy_options::overwrite_existing);
+      }
+    }
+  }
+  // Next time (a new browser, as at the next start): read back, none drawn.
+  SceneBrowser again({folder()}, cache);
+  makeAll(again, renderer);
+  EXPECT_EQ(again.rendered(), 0);
+  EXPECT_EQ(again.fromCache(), 2);
+  EXPECT_EQ(readyCount(again), 2);
+
+  // A changed scene file is drawn again; the other stays cached.
+  std::ofstream(hangingSheet_, std::ios::app) << "\n";
+  SceneBrowser changed({folder()}, cache);
+  makeAll(changed, renderer);
+  EXPECT_EQ(changed.rendered(), 1);
+  EXPECT_EQ(changed.fromCache(), 1);
+}
+
+TEST_F(SceneBrowserTest, ASceneThatDoesNotLoadSaysWhyInsteadOfAPicture) {
+  dir_.write("scenes/broken.json", R"({"name": "broken", "description": "a typo", "clothes": []})");
+  ui::SceneRenderer renderer;
+  SceneBrowser browser({folder()}, ThumbnailCache(dir_.path() / "cache"));
+  makeAll(browser, renderer);
+  const auto broken = std::find_if(browser.scenes().begin(), browser.scenes().end(),
+                                   [](const BrowserScene& s) { return s.name == "broken"; });
+  ASSERT_NE(broken, browser.scenes().end());
+  EXPECT_EQ(broken->thumbnail, BrowserScene::Thumbnail::Failed);
+  EXPECT_NE(broken->problem.find("clothes"), std::string::npos) << broken->problem;
+  EXPECT_FALSE(fs::exists(dir_.path() / "cache" / (broken->key + ".png")));
+}
+
+// The panel: thumbnails with names and descriptions; a click on one asks to open that scene.
+TEST_F(SceneBrowserTest, ThePanelShowsEachSceneAndAClickOpensIt) {
+  addHangingSheet();
+  ui::SceneRenderer renderer;
+  SceneBrowser browser({folder()}, ThumbnailCache(dir_.path() / "cache"));
+  ui_.panels.browser = &browser;
+  ui_.panels.browserOpen = true;
+  for (int frame = 0; frame < 4; ++frame) {  // as the app does: one thumbnail before each frame
+    browser.makeNextThumbnail(renderer);
+    imgui_->frame(drawUi());
+  }
+  EXPECT_FALSE(browser.pending());
+  ASSERT_TRUE(probe_.rects.count("browser/hanging-sheet")) << "the browser draws every scene";
+  ASSERT_TRUE(probe_.rects.count("browser/ball-into-sheet-table4.1-cloth2"));
+  if (const char* keep = std::getenv("WEFT_KEEP_THUMBNAILS"); keep != nullptr && *keep != '\0') {
+    fs::create_directories(keep);
+    test::writePng(fs::path(keep) / "browser_panel.png", imgui_->image());
+  }
+  imgui_->click(probe_.centre("browser/hanging-sheet"), drawUi());
+  EXPECT_EQ(ui_.panels.openRequest, hangingSheet_);
+  EXPECT_FALSE(ui_.panels.browserOpen) << "the browser closes once a scene is chosen";
+}
+
+// The Materials tab: each preset of the scene's search path with its source, listed once (not
+// read every frame); a click gives the selected cloth that material.
+TEST_F(SceneBrowserTest, TheMaterialsTabListsPresetsWithTheirSourceAndAClickUsesOne) {
+  SceneBrowser browser({folder()}, ThumbnailCache(dir_.path() / "cache"));
+  ui_.panels.browser = &browser;
+  ui_.panels.browserOpen = true;
+  for (int frame = 0; frame < 2; ++frame) imgui_->frame(drawUi());  // a tab bar lays its tabs out in its second frame
+  imgui_->click(probe_.centre("browser/materials-tab"), drawUi());
+  imgui_->frame(drawUi());  // a tab chosen in one frame shows its contents from the next
+  if (const char* keep = std::getenv("WEFT_KEEP_THUMBNAILS"); keep != nullptr && *keep != '\0') {
+    fs::create_directories(keep);
+    test::writePng(fs::path(keep) / "materials_tab.png", imgui_->image());
+  }
+  ASSERT_FALSE(browser.materials().empty());
+  const auto royal = std::find_if(browser.materials().begin(), browser.materials().end(),
+                                  [](const BrowserPreset& p) { return p.name == "royal-target"; });
+  ASSERT_NE(royal, browser.materials().end());
+  EXPECT_FALSE(royal->source.empty()) << "its source is shown";
+  ASSERT_TRUE(probe_.rects.count("browser/material/royal-target"));
+  ASSERT_NE(session_->scene().cloths[0].materialName, "royal-target");
+  imgui_->click(probe_.centre("browser/material/royal-target"), drawUi());
+  EXPECT_EQ(session_->scene().cloths[0].materialName, "royal-target") << session_->status;
+}
+
+}  // namespace
+}  // namespace weft::editor
