@@ -108,7 +108,8 @@ std::size_t ContactStage::heapBytes() const {
 }
 
 std::size_t NonlocalStress::heapBytes() const {
-  return weft::heapBytes(centroid_) + weft::heapBytes(area_) + weft::heapBytes(stamp_) + weft::heapBytes(region_);
+  return weft::heapBytes(centroid_) + weft::heapBytes(area_) + weft::heapBytes(lip_) + weft::heapBytes(stamp_) +
+         weft::heapBytes(region_);
 }
 
 std::size_t TearSearch::heapBytes() const {
@@ -121,6 +122,7 @@ std::size_t TearStage::heapBytes() const {
   std::size_t bytes = weft::heapBytes(localStress_) + weft::heapBytes(stress_) + nonlocal_.heapBytes() +
                       weft::heapBytes(corners_) + search_.heapBytes() + weft::heapBytes(log_);
   for (const auto& tips : overshoot_) bytes += weft::heapBytes(tips);
+  for (const auto& waiting : overloadedSince_) bytes += weft::heapBytes(waiting);
   return bytes;
 }
 
