@@ -74,28 +74,9 @@ void expectFollowsTheWeakLine(const TearOutcome& o, double smallestAngleBefore) 
 
 constexpr int kSteps = 180;  // 0.75 s: the pull reaches the weak strength at about 0.4 s
 
-TEST(TearDirection, OnARegularGridAtAnyWeftAngleTheTearFollowsTheWeakLine) {
-  for (const double weftDeg : {17.0, 31.0, 62.0, 104.0}) {
-    const Scene scene = test::biaxialSheet(25, weakAlongTheWarp(), weftDeg, true);
-    const TearOutcome o = runAndMeasure(scene, warpDirectionDeg(weftDeg), kSteps);
-    print("grid 24^2", weftDeg, o);
-    expectFollowsTheWeakLine(o, 45.0);
-  }
-}
-
-TEST(TearDirection, OnAnIrregularMeshTheTearFollowsTheWeakLine) {
-  const test::TempDir dir;
-  const auto obj = dir.write("irregular.obj", test::irregularSheetObj(24, 0.2, 7));
-  for (const double weftDeg : {17.0, 48.0}) {
-    const Scene scene = test::biaxialIrregularSheet(obj, 24, weakAlongTheWarp(), weftDeg, true);
-    World before(scene);
-    double smallest = 180.0;
-    for (const Triangle& t : before.cloth(0).tris) smallest = std::min(smallest, radToDeg(smallestRestAngle(t)));
-    const TearOutcome o = runAndMeasure(scene, warpDirectionDeg(weftDeg), kSteps);
-    print("irregular", weftDeg, o);
-    expectFollowsTheWeakLine(o, smallest);
-  }
-}
+// A scene in a tearing mode: the default, or another one under test.
+using Mode = Scene (*)(Scene);
+Scene asShipped(Scene scene) { return scene; }
 
 // The mode in which crack growth does not depend on the resolution (crack_growth_test.cpp): cracks
 // run on within a step, the stress is read averaged over 6.5 cm with lips left out, and a new crack
@@ -107,24 +88,40 @@ Scene inGrowthMode(Scene scene) {
   return scene;
 }
 
-TEST(TearDirection, InTheResolutionIndependentModeTheTearFollowsTheWeakLineToo) {
+void expectTheGridFollowsTheWeakLine(Mode mode, const char* label) {
   for (const double weftDeg : {17.0, 31.0, 62.0, 104.0}) {
-    const Scene scene = inGrowthMode(test::biaxialSheet(25, weakAlongTheWarp(), weftDeg, true));
+    const Scene scene = mode(test::biaxialSheet(25, weakAlongTheWarp(), weftDeg, true));
     const TearOutcome o = runAndMeasure(scene, warpDirectionDeg(weftDeg), kSteps);
-    print("grid, run", weftDeg, o);
+    print(label, weftDeg, o);
     expectFollowsTheWeakLine(o, 45.0);
   }
+}
+
+void expectTheIrregularMeshFollowsTheWeakLine(Mode mode, const char* label) {
   const test::TempDir dir;
   const auto obj = dir.write("irregular.obj", test::irregularSheetObj(24, 0.2, 7));
   for (const double weftDeg : {17.0, 48.0}) {
-    const Scene scene = inGrowthMode(test::biaxialIrregularSheet(obj, 24, weakAlongTheWarp(), weftDeg, true));
+    const Scene scene = mode(test::biaxialIrregularSheet(obj, 24, weakAlongTheWarp(), weftDeg, true));
     World before(scene);
     double smallest = 180.0;
     for (const Triangle& t : before.cloth(0).tris) smallest = std::min(smallest, radToDeg(smallestRestAngle(t)));
     const TearOutcome o = runAndMeasure(scene, warpDirectionDeg(weftDeg), kSteps);
-    print("irreg, run", weftDeg, o);
+    print(label, weftDeg, o);
     expectFollowsTheWeakLine(o, smallest);
   }
+}
+
+TEST(TearDirection, OnARegularGridAtAnyWeftAngleTheTearFollowsTheWeakLine) {
+  expectTheGridFollowsTheWeakLine(asShipped, "grid 24^2");
+}
+
+TEST(TearDirection, OnAnIrregularMeshTheTearFollowsTheWeakLine) {
+  expectTheIrregularMeshFollowsTheWeakLine(asShipped, "irregular");
+}
+
+TEST(TearDirection, InTheResolutionIndependentModeTheTearFollowsTheWeakLineToo) {
+  expectTheGridFollowsTheWeakLine(inGrowthMode, "grid, run");
+  expectTheIrregularMeshFollowsTheWeakLine(inGrowthMode, "irreg, run");
 }
 
 // The thesis' lines (each triangle's edges and bisector: on this grid, every 22.5 degrees) cannot
