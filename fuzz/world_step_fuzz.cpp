@@ -24,6 +24,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <memory>
 #include <set>
@@ -154,5 +155,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (!finiteMetrics(world->metrics())) std::abort();
   }
   if (const auto& failure = health.failure()) checkFailure(*failure, world->stepCount());
+  // WEFT_FUZZ_VERBOSE=1 with inputs given as files says how each run ended.
+  static const bool verbose = std::getenv("WEFT_FUZZ_VERBOSE") != nullptr;
+  if (verbose) {
+    const auto& failure = health.failure();
+    std::fprintf(stderr, "world_step: %s\n",
+                 failure ? weft::healthWarning(*failure).c_str() : finite ? "healthy" : "non-finite, health check passed");
+  }
   return 0;
 }
