@@ -7,7 +7,8 @@
 #   scripts/fuzz.sh                 the campaign: 1,000,000 executions per target
 #   scripts/fuzz.sh --seconds 10    a bounded run per target (CI)
 #   scripts/fuzz.sh ... TARGET...   only the named targets (json_text scene material_preset
-#                                   tear_table obj_cloth closed_obj sharp_tags scene_overrides)
+#                                   tear_table obj_cloth closed_obj sharp_tags scene_overrides
+#                                   world_step)
 # The corpus each run grows is kept in build-fuzz/corpus/TARGET and reused by the next run.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -20,7 +21,7 @@ if [ "${1:-}" = "--seconds" ]; then
 fi
 targets=("$@")
 if [ ${#targets[@]} -eq 0 ]; then
-  targets=(json_text scene material_preset tear_table obj_cloth closed_obj sharp_tags scene_overrides)
+  targets=(json_text scene material_preset tear_table obj_cloth closed_obj sharp_tags scene_overrides world_step)
 fi
 
 CC=clang CXX=clang++ cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DWEFT_FUZZ=ON \
@@ -45,10 +46,12 @@ make_seeds() {
     obj_cloth) cp assets/meshes/*.obj fuzz/seeds/obj_cloth/*.obj "$dir/" ;;
     closed_obj) cp assets/tools/*.obj fuzz/seeds/closed_obj/*.obj "$dir/" ;;
     sharp_tags) cp assets/tools/*.sharp.json fuzz/seeds/sharp_tags/*.json "$dir/" ;;
-    scene_overrides)
-      # Each shipped scene as it is (its name alone), and the hand-made overrides.
+    scene_overrides | world_step)
+      # Each shipped scene as it is (its name alone), and the hand-made overrides; for the step,
+      # also overrides that blow a run up (fuzz/seeds/world_step/).
       for f in presets/scenes/*.json; do basename "$f" .json > "$dir/$(basename "$f" .json).txt"; done
-      cp fuzz/seeds/scene_overrides/*.txt "$dir/" ;;
+      cp fuzz/seeds/scene_overrides/*.txt "$dir/"
+      if [ "$1" = world_step ]; then cp fuzz/seeds/world_step/*.txt "$dir/"; fi ;;
   esac
 }
 
@@ -58,7 +61,7 @@ make_seeds() {
 make_dictionary() {
   local dict="build-fuzz/seeds/$1.dict"
   case "$1" in
-    scene_overrides)
+    scene_overrides | world_step)
       grep -ohE '"[A-Za-z_]+" *:' presets/scenes/*.json | sed -E 's/^"([A-Za-z_]+)".*/"\1"/' | sort -u > "$dict"
       printf '"%s"\n' sphere box capsule cylinder mesh static kinematic dynamic . = '[' ']' '{' '}' >> "$dict"
       echo "$dict" ;;
@@ -74,7 +77,7 @@ make_dictionary() {
 # fuzz/seeds/closed_obj/ are whole. An override line is under 100 bytes; 1 KB holds 16 of them or
 # a whole obstacle written as one value.
 declare -A max_len=([json_text]=4096 [scene]=4096 [material_preset]=4096 [tear_table]=4096 [obj_cloth]=8192
-                    [closed_obj]=8192 [sharp_tags]=4096 [scene_overrides]=1024)
+                    [closed_obj]=8192 [sharp_tags]=4096 [scene_overrides]=1024 [world_step]=1024)
 # A unit slower than this many seconds (wall clock) is a finding: a hang. The slowest legitimate
 # input is a scene pinning a 1024 x 1024 grid (built to check the pins): 4 s of CPU under the
 # sanitizers, half a minute of wall time on a loaded machine.
