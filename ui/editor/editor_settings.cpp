@@ -8,26 +8,18 @@
 #include <nlohmann/json.hpp>
 
 #include "util/atomic_file.h"
+#include "editor/environment_variable.h"
 
 namespace weft::editor {
 
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-namespace {
-
-std::string environment(const char* name) {
-  const char* value = std::getenv(name);
-  return value ? std::string(value) : std::string();
-}
-
-}  // namespace
-
 fs::path defaultSettingsFile() {
-  if (const std::string dir = environment("WEFT_CONFIG_DIR"); !dir.empty()) return fs::path(dir) / "editor.json";
-  if (const std::string config = environment("XDG_CONFIG_HOME"); !config.empty())
+  if (const std::string dir = environmentVariable("WEFT_CONFIG_DIR"); !dir.empty()) return fs::path(dir) / "editor.json";
+  if (const std::string config = environmentVariable("XDG_CONFIG_HOME"); !config.empty())
     return fs::path(config) / "weft" / "editor.json";
-  if (const std::string home = environment("HOME"); !home.empty()) return fs::path(home) / ".config" / "weft" / "editor.json";
+  if (const std::string home = environmentVariable("HOME"); !home.empty()) return fs::path(home) / ".config" / "weft" / "editor.json";
   return fs::temp_directory_path() / "weft-editor.json";
 }
 

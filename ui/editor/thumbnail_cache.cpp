@@ -1,4 +1,5 @@
 #include "thumbnail_cache.h"
+#include "editor/environment_variable.h"
 
 #include <cstdint>
 #include <cstdio>
@@ -10,19 +11,10 @@ namespace weft::editor {
 
 namespace fs = std::filesystem;
 
-namespace {
-
-std::string environment(const char* name) {
-  const char* value = std::getenv(name);
-  return value ? std::string(value) : std::string();
-}
-
-}  // namespace
-
 fs::path defaultThumbnailFolder() {
-  if (const std::string dir = environment("WEFT_CACHE_DIR"); !dir.empty()) return fs::path(dir) / "thumbnails";
-  if (const std::string cache = environment("XDG_CACHE_HOME"); !cache.empty()) return fs::path(cache) / "weft" / "thumbnails";
-  if (const std::string home = environment("HOME"); !home.empty()) return fs::path(home) / ".cache" / "weft" / "thumbnails";
+  if (const std::string dir = environmentVariable("WEFT_CACHE_DIR"); !dir.empty()) return fs::path(dir) / "thumbnails";
+  if (const std::string cache = environmentVariable("XDG_CACHE_HOME"); !cache.empty()) return fs::path(cache) / "weft" / "thumbnails";
+  if (const std::string home = environmentVariable("HOME"); !home.empty()) return fs::path(home) / ".cache" / "weft" / "thumbnails";
   return fs::temp_directory_path() / "weft-thumbnails";
 }
 
