@@ -355,6 +355,11 @@ Command addBenchCommand(CLI::App& app) {
   cli->add_option("--tearing-resolution", options->tearingOptions.resolution, "Tearing benchmark: grid vertices per side")
       ->check(CLI::Range(4, 1024))
       ->capture_default_str();
+  cli->add_option("--tearing-rows", options->tearingOptions.rows,
+                  "Tearing benchmark: the configurations timed (thesis, thesis-unbounded, dense, dense-unbounded, "
+                  "propagate, growth), comma-separated; default all")
+      ->delimiter(',')
+      ->check(CLI::IsMember({"thesis", "thesis-unbounded", "dense", "dense-unbounded", "propagate", "growth"}));
   cli->add_option("--tearing-csv", options->tearingOptions.csv, "Tearing benchmark: CSV output file")->capture_default_str();
   cli->add_flag("--solver-accuracy", options->solverAccuracy,
                 "Instead of timing, run the scene for --solver-accuracy-duration seconds at each of --sizes with "

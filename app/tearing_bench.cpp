@@ -34,6 +34,9 @@ struct TearingBenchRow {
   int vertices = 0;  // at the end of the last repeat
   double medianTearingMs = 0.0;
   double medianStepMs = 0.0;
+  // The stage's parts, each a median over the timed steps: averaged stress, line search, surgery,
+  // stress after each tear (they need not add up to the stage's median).
+  double medianStressMs = 0.0, medianSearchMs = 0.0, medianSurgeryMs = 0.0, medianRelaxMs = 0.0;
   double tearsPerRepeat = 0.0;
   double skippedShare = 0.0;  // of the vertices looked at
   double linesPerStep = 0.0;
@@ -62,6 +65,8 @@ TearingBenchRow measure(const TearingBenchOptions& options, const std::string& l
   row.propagate = propagate;
   row.growthMode = growthMode;
   std::vector<double> tearingSamples, stepSamples;
+  const char* const parts[] = {"tear_stress", "tear_search", "tear_surgery", "tear_relax"};
+  std::vector<double> partSamples[4];
   long long tears = 0, looked = 0, skipped = 0, evaluated = 0;
   for (int repeat = 0; repeat < options.repeats; ++repeat) {
     World world(loadScene(scene, overrides));
@@ -73,7 +78,10 @@ TearingBenchRow measure(const TearingBenchOptions& options, const std::string& l
     for (int s = 0; s < options.steps; ++s) {
       const double tearingBefore = world.profile().totalWithPrefix("tear_");
       const double totalBefore = world.profile().total();
+      double partBefore[4];
+      for (int k = 0; k < 4; ++k) partBefore[k] = world.profile().totalWithPrefix(parts[k]);
       world.step();
+      for (int k = 0; k < 4; ++k) partSamples[k].push_back(world.profile().totalWithPrefix(parts[k]) - partBefore[k]);
       tearingSamples.push_back(world.profile().totalWithPrefix("tear_") - tearingBefore);
       stepSamples.push_back(world.profile().total() - totalBefore);
     }
@@ -86,6 +94,10 @@ TearingBenchRow measure(const TearingBenchOptions& options, const std::string& l
   }
   row.medianTearingMs = median(tearingSamples);
   row.medianStepMs = median(stepSamples);
+  row.medianStressMs = median(partSamples[0]);
+  row.medianSearchMs = median(partSamples[1]);
+  row.medianSurgeryMs = median(partSamples[2]);
+  row.medianRelaxMs = median(partSamples[3]);
   row.tearsPerRepeat = static_cast<double>(tears) / options.repeats;
   row.skippedShare = looked > 0 ? static_cast<double>(skipped) / looked : 0.0;
   row.linesPerStep = static_cast<double>(evaluated) / (static_cast<double>(options.steps) * options.repeats);
@@ -97,21 +109,28 @@ TearingBenchRow measure(const TearingBenchOptions& options, const std::string& l
 int runTearingBench(const TearingBenchOptions& options) {
   std::vector<TearingBenchRow> rows;
   try {
-    std::printf("%-7s %-6s %-9s %8s %16s %14s %8s %10s %12s %12s\n", "lines", "bound", "propagate", "vertices",
-                "tearing ms/step", "whole ms/step", "share", "tears", "skipped", "lines/step");
+    std::printf("%-7s %-6s %-9s %8s %16s %14s %8s %10s %12s %12s   %s\n", "lines", "bound", "propagate", "vertices",
+                "tearing ms/step", "whole ms/step", "share", "tears", "skipped", "lines/step",
+                "stress/search/surgery/relax ms");
     struct Config {
+      const char* name;
       const char* lines;
       bool bound, propagate, growthMode;
     };
-    for (const Config c : {Config{"thesis", true, false, false}, Config{"thesis", false, false, false},
-                           Config{"dense", true, false, false}, Config{"dense", false, false, false},
-                           Config{"dense", true, true, false}, Config{"dense", true, true, true}}) {
+    const Config configs[] = {{"thesis", "thesis", true, false, false},  {"thesis-unbounded", "thesis", false, false, false},
+                              {"dense", "dense", true, false, false},    {"dense-unbounded", "dense", false, false, false},
+                              {"propagate", "dense", true, true, false}, {"growth", "dense", true, true, true}};
+    for (const Config& c : configs) {
+      if (!options.rows.empty() && std::find(options.rows.begin(), options.rows.end(), c.name) == options.rows.end()) {
+        continue;
+      }
       {
         const TearingBenchRow r = measure(options, c.lines, c.bound, c.propagate, c.growthMode);
-        std::printf("%-7s %-6s %-9s %8d %16.3f %14.3f %7.1f%% %10.1f %11.1f%% %12.0f\n", r.lines.c_str(),
-                    r.bound ? "on" : "off", r.growthMode ? "growth" : r.propagate ? "on" : "off", r.vertices, r.medianTearingMs, r.medianStepMs,
-                    100.0 * r.medianTearingMs / r.medianStepMs, r.tearsPerRepeat, 100.0 * r.skippedShare,
-                    r.linesPerStep);
+        std::printf("%-7s %-6s %-9s %8d %16.3f %14.3f %7.1f%% %10.1f %11.1f%% %12.0f   %.2f/%.2f/%.2f/%.2f\n",
+                    r.lines.c_str(), r.bound ? "on" : "off", r.growthMode ? "growth" : r.propagate ? "on" : "off",
+                    r.vertices, r.medianTearingMs, r.medianStepMs, 100.0 * r.medianTearingMs / r.medianStepMs,
+                    r.tearsPerRepeat, 100.0 * r.skippedShare, r.linesPerStep, r.medianStressMs, r.medianSearchMs,
+                    r.medianSurgeryMs, r.medianRelaxMs);
         std::fflush(stdout);
         rows.push_back(r);
       }
@@ -126,12 +145,14 @@ int runTearingBench(const TearingBenchOptions& options) {
                                  std::to_string(options.warmup) + " warm-up steps, " + std::to_string(options.steps) +
                                  " timed steps x " + std::to_string(options.repeats) + " repeats");
   csv << "lines,skip_by_bound,propagate,stress_length_m,incubation_s,vertices,median_tearing_ms_per_step,median_step_ms,tearing_share,tears_per_repeat,"
-         "skipped_vertex_share,lines_evaluated_per_step\n";
+         "skipped_vertex_share,lines_evaluated_per_step,median_stress_ms,median_search_ms,median_surgery_ms,"
+         "median_relax_ms\n";
   for (const auto& r : rows) {
     csv << r.lines << "," << (r.bound ? "true" : "false") << "," << (r.propagate ? "true" : "false") << ","
         << (r.growthMode ? kGrowthStressLength : 0.0) << "," << (r.growthMode ? kGrowthIncubation : 0.0) << "," << r.vertices << "," << r.medianTearingMs << ","
         << r.medianStepMs << "," << r.medianTearingMs / r.medianStepMs << "," << r.tearsPerRepeat << ","
-        << r.skippedShare << "," << r.linesPerStep << "\n";
+        << r.skippedShare << "," << r.linesPerStep << "," << r.medianStressMs << "," << r.medianSearchMs << ","
+        << r.medianSurgeryMs << "," << r.medianRelaxMs << "\n";
   }
   return writeBenchCsv(options.csv, csv.str()) ? kExitOk : kExitFailure;
 }

@@ -3,6 +3,7 @@
 // thesis' candidate lines and the dense ones, each with and without the bound that skips quiet
 // vertices, against the whole step.
 #include <string>
+#include <vector>
 
 namespace weft::app {
 
@@ -13,6 +14,9 @@ struct TearingBenchOptions {
   int steps = 30;           // timed steps per repeat
   int repeats = 3;          // the median over every timed step of every repeat is reported
   int threads = 1;
+  // The configurations timed, by name (thesis, thesis-unbounded, dense, dense-unbounded, propagate,
+  // growth); empty: all of them.
+  std::vector<std::string> rows;
   std::string csv = "out/bench/tearing.csv";
 };
 
