@@ -155,4 +155,35 @@ double separationStrengthBound(const StressFan& fan) {
   return std::min(byArcs, byMean);
 }
 
+void separationStrengthPieceBounds(const StressFan& fan, int samples, std::vector<SeparationPieceBound>& out) {
+  out.clear();
+  double largest = 0.0;  // the fan's largest principal stress
+  for (const FanSector& sector : fan.sectors) largest = std::max(largest, spectralNorm(sector.stress));
+  const double from = fan.closed ? 0.0 : fan.openStart;
+  const double range = fan.closed ? std::numbers::pi : fan.openSpan;
+  if (!(range > 0.0) || samples < 1) return;
+  const double width = range / samples;
+  const Vec2 gStart = gAt(fan.openStart), gEnd = gAt(fan.openStart + fan.openSpan);
+  for (int k = 0; k < samples; ++k) {
+    SeparationPieceBound piece;
+    piece.angle = from + (k + 0.5) * width;
+    piece.halfWidth = 0.5 * width;
+    const Vec2 gLine = gAt(piece.angle);
+    double q1 = 0.0, q2 = 0.0;
+    if (fan.closed) {
+      q1 = arcForce(fan, piece.angle, std::numbers::pi, gLine, -gLine).norm();
+      q2 = arcForce(fan, piece.angle + std::numbers::pi, std::numbers::pi, -gLine, gLine).norm();
+    } else {
+      const double before = (k + 0.5) * width;
+      q1 = arcForce(fan, fan.openStart, before, gStart, gLine).norm();
+      q2 = arcForce(fan, piece.angle, fan.openSpan - before, gLine, gEnd).norm();
+    }
+    // Both ends of a closed fan's line sweep (2 sigma per radian); a ray sweeps one.
+    const double drift = (fan.closed ? 2.0 : 1.0) * largest * piece.halfWidth;
+    // The margin covers rounding, so the bound never settles a vertex that would tear.
+    piece.zeta = (fan.closed ? 0.5 : 1.0) * (std::min(q1, q2) + drift) * (1.0 + 1e-9);
+    out.push_back(piece);
+  }
+}
+
 }  // namespace weft

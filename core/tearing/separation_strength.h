@@ -75,4 +75,18 @@ double separationStrength(const StressFan& fan, double angle);
 // whose bound is below the weakest required strength cannot tear in any direction.
 double separationStrengthBound(const StressFan& fan);
 
+// Bounds of separationStrength within each of `samples` even pieces of the lines' half turn (a
+// closed fan) or of the rays' open fan: piece k is centred on `angle` and spans `halfWidth` either
+// side of it. The traction of a side changes with the line's angle by at most the two ends'
+// stresses (d q / d theta = sigma(theta + pi) r(theta + pi) - sigma(theta) r(theta)), so the
+// largest principal stress of the fan bounds how far |q| moves from the piece's centre, and
+// zeta <= min(|q1|, |q2|) (halved at an interior vertex). Cheaper than the dense search by the
+// ratio of their sample counts; a vertex whose pieces all stay below its strengths is settled.
+struct SeparationPieceBound {
+  double angle = 0.0;      // rad, material space
+  double halfWidth = 0.0;  // rad
+  double zeta = 0.0;       // N/m, no line in the piece separates more
+};
+void separationStrengthPieceBounds(const StressFan& fan, int samples, std::vector<SeparationPieceBound>& out);
+
 }  // namespace weft

@@ -97,6 +97,21 @@ TearCandidate bestLineAt(const StressFan& fan, const TearTable& table, double we
                              counts);
 }
 
+double omegaBoundAt(const StressFan& fan, const TearTable& table, double weftAngleRad, double strengthScale,
+                    int pieces, TearSearchCounts& counts) {
+  thread_local std::vector<SeparationPieceBound> bounds;  // reused: no allocation per vertex
+  separationStrengthPieceBounds(fan, pieces, bounds);
+  counts.linesEvaluated += pieces;
+  double bound = 0.0;
+  for (const SeparationPieceBound& piece : bounds) {
+    const double alpha = angleFromWarpDeg(piece.angle, weftAngleRad);
+    const double halfWidthDeg = piece.halfWidth * kRadToDeg;
+    const double weakest = strengthScale * weakestStrengthBetween(table, alpha - halfWidthDeg, alpha + halfWidthDeg);
+    bound = std::max(bound, piece.zeta / weakest);
+  }
+  return bound;
+}
+
 std::vector<TearCandidate> linesAboveOneAt(const StressFan& fan, const TearTable& table, double weftAngleRad,
                                            const TearSearchSettings& settings, double strengthScale,
                                            double maxTurnRad) {

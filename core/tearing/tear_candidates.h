@@ -69,6 +69,12 @@ TearCandidate bestLineAt(const StressFan& fan, const TearTable& table, double we
                          const TearSearchSettings& settings, double strengthScale, TearSearchCounts& counts,
                          double maxTurnRad = kNoTurnLimit);
 
+// A bound on omega over every line (or ray) of the fan, sharper than the fan's bound over its
+// weakest strength: the fan in `pieces` pieces, each bounded by separationStrengthPieceBounds over
+// the weakest strength within the piece's directions. Costs `pieces` line evaluations.
+double omegaBoundAt(const StressFan& fan, const TearTable& table, double weftAngleRad, double strengthScale,
+                    int pieces, TearSearchCounts& counts);
+
 // The other ways a vertex could open, when its best line is refused by the mesh: every line with
 // omega > 1, best first (the thesis' lines; for dense lines, the local maxima of the sampling).
 std::vector<TearCandidate> linesAboveOneAt(const StressFan& fan, const TearTable& table, double weftAngleRad,

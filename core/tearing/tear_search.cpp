@@ -34,6 +34,30 @@ CrackPlace crackPlaceOf(const ClothMesh& mesh, const VertexFan& fan) {
   return slit ? CrackPlace::Tip : CrackPlace::Lip;
 }
 
+// The pieces of a fan's piecewise bound (5 degrees each over a line's half turn): a twentieth of
+// the margin of a line's traction between the pieces' centres.
+constexpr int kBoundPieces = 36;
+
+// Heap order: the larger key first, then the lower vertex (ties go to the lower vertex id).
+struct HeapOrder {
+  template <typename E>
+  bool operator()(const E& a, const E& b) const {
+    return a.key != b.key ? a.key < b.key : a.vertex > b.vertex;
+  }
+};
+
+template <typename E>
+void pushEntry(std::vector<E>& heap, const E& entry) {
+  heap.push_back(entry);
+  std::push_heap(heap.begin(), heap.end(), HeapOrder{});
+}
+
+template <typename E>
+void popEntry(std::vector<E>& heap) {
+  std::pop_heap(heap.begin(), heap.end(), HeapOrder{});
+  heap.pop_back();
+}
+
 }  // namespace
 
 void TearSearch::start(const ClothMesh& mesh, const std::vector<TriangleCorners>& corners,
@@ -62,7 +86,14 @@ void TearSearch::start(const ClothMesh& mesh, const std::vector<TriangleCorners>
   best_.assign(n, TearCandidate{});
   evaluated_.assign(n, 0);
   excluded_.assign(n, 0);
+  held_.assign(n, 0);
+  sharpened_.assign(n, 0);
   place_.assign(n, CrackPlace::None);
+  version_.assign(n, 0);
+  crackVertices_.clear();
+  waiting_.clear();
+  evaluatedHeap_.clear();
+  unboundedHeap_.clear();
   for (int v = 0; v < n; ++v) lookAt(mesh, corners, stress, v, counts);
 }
 
@@ -75,7 +106,10 @@ void TearSearch::refresh(const ClothMesh& mesh, const std::vector<TriangleCorner
   best_.resize(n);
   evaluated_.resize(n, 0);
   excluded_.resize(n, 0);
+  held_.resize(n, 0);
+  sharpened_.resize(n, 0);
   place_.resize(n, CrackPlace::None);
+  version_.resize(n, 0);
   walked_.resize(n, 1);
   std::vector<int> vertices(extraVertices);
   for (int t : triangles) {
@@ -96,6 +130,33 @@ void TearSearch::exclude(int vertex) {
   if (vertex >= 0 && vertex < static_cast<int>(excluded_.size())) excluded_[vertex] = 1;
 }
 
+void TearSearch::hold(int vertex) {
+  if (vertex >= 0 && vertex < static_cast<int>(held_.size())) held_[vertex] = 1;
+}
+
+bool TearSearch::offerable(const Entry& entry) const {
+  const int v = entry.vertex;
+  return entry.version == version_[v] && !excluded_[v] && !(held_[v] && place_[v] != CrackPlace::Tip);
+}
+
+bool TearSearch::overloadedAsStart(const ClothMesh& mesh, const std::vector<TriangleCorners>& corners,
+                                   const std::vector<Mat2>& stress, int vertex, double hintAngle, double& angle,
+                                   TearSearchCounts& counts) {
+  if (vertex < 0 || vertex >= static_cast<int>(bound_.size()) || bound_[vertex] < 1.0) return false;
+  if (place_[vertex] == CrackPlace::Tip) return false;
+  fanOf(mesh, corners, stress, vertex, fan_);
+  const double zeta = separationStrength(fan_, hintAngle);
+  ++counts.linesEvaluated;
+  if (zeta / requiredStrength(*table_, angleFromWarpDeg(hintAngle, weftAngleRad_)) > 1.0) {
+    angle = hintAngle;
+    return true;
+  }
+  const TearCandidate best = bestLineOf(mesh, stress, vertex, place_[vertex], counts);
+  if (!(best.ratio > 1.0)) return false;
+  angle = best.angle;
+  return true;
+}
+
 CrackPlace TearSearch::fanOf(const ClothMesh& mesh, const std::vector<TriangleCorners>& corners,
                        const std::vector<Mat2>& stress, int vertex, StressFan& fan) const {
   if (!walked_[vertex]) {
@@ -113,6 +174,14 @@ void TearSearch::lookAt(const ClothMesh& mesh, const std::vector<TriangleCorners
                         const std::vector<Mat2>& stress, int vertex, TearSearchCounts& counts) {
   evaluated_[vertex] = 0;
   bound_[vertex] = 0.0;
+  ++version_[vertex];
+  sharpened_[vertex] = 0;
+  boundAt(mesh, corners, stress, vertex, counts);
+  if (bound_[vertex] >= 1.0) pushEntry(waiting_, Entry{bound_[vertex], vertex, version_[vertex]});
+}
+
+void TearSearch::boundAt(const ClothMesh& mesh, const std::vector<TriangleCorners>& corners,
+                         const std::vector<Mat2>& stress, int vertex, TearSearchCounts& counts) {
   if (!holds(mesh, triangleAt_[vertex], vertex)) {
     // A separated vertex's triangle may have gone to its copy: find one it still holds.
     triangleAt_[vertex] = findTriangleAt(mesh, vertex);
@@ -121,6 +190,7 @@ void TearSearch::lookAt(const ClothMesh& mesh, const std::vector<TriangleCorners
   ++counts.vertices;
   const CrackPlace place = fanOf(mesh, corners, stress, vertex, fan_);
   place_[vertex] = place;
+  if (place != CrackPlace::None) crackVertices_.push_back(vertex);
   if (place == CrackPlace::Lip && !settings_.branchFromLips) return;  // cracks grow at their tips
   if (place == CrackPlace::Tip && settings_.tipLength > 0.0) {
     // The tip reads the material ahead of it, not its fan: no bound from the fan (tips are few).
@@ -147,32 +217,51 @@ TearCandidate TearSearch::candidateAt(const ClothMesh& mesh, int vertex, const S
 
 std::optional<TearCandidate> TearSearch::best(const ClothMesh& mesh, const std::vector<TriangleCorners>& corners,
                                               const std::vector<Mat2>& stress, TearSearchCounts& counts) {
-  std::vector<std::pair<double, int>> open;  // (bound, vertex)
-  for (int v = 0; v < static_cast<int>(bound_.size()); ++v) {
-    if (bound_[v] >= 1.0 && !excluded_[v]) open.emplace_back(bound_[v], v);
-  }
-  std::sort(open.begin(), open.end(), [](const auto& a, const auto& b) {
-    return a.first != b.first ? a.first > b.first : a.second < b.second;
-  });
-  TearCandidate winner;
-  for (const auto& [bound, v] : open) {
+  auto dropStale = [&](std::vector<Entry>& heap) {
+    while (!heap.empty() && !offerable(heap.front())) popEntry(heap);
+  };
+  auto better = [](const Entry* a, const Entry* b) { return b == nullptr || (a != nullptr && HeapOrder{}(*b, *a)); };
+  // Branch and bound: the waiting vertices in order of decreasing bound, until none left can beat
+  // the best line found (ties are still evaluated, so the lower vertex id wins).
+  while (true) {
+    dropStale(waiting_);
+    dropStale(evaluatedHeap_);
+    dropStale(unboundedHeap_);
+    if (waiting_.empty()) break;
+    const Entry next = waiting_.front();
+    const bool unbounded = next.key == std::numeric_limits<double>::infinity();
     // Crack tips (read ahead of them, so unbounded: they come first) tear before any new crack
     // starts: the stress around a tip is its own concentration, which its running relieves.
-    if (settings_.tipLength > 0.0 && winner.crackTip && winner.ratio > 1.0 &&
-        bound < std::numeric_limits<double>::infinity()) {
-      break;
+    // (Without the bound every vertex is unbounded: then the best of them all wins.)
+    if (!unbounded && !unboundedHeap_.empty() && unboundedHeap_.front().key > 1.0) break;
+    const double leading = std::max(unboundedHeap_.empty() ? 0.0 : unboundedHeap_.front().key,
+                                    evaluatedHeap_.empty() ? 0.0 : evaluatedHeap_.front().key);
+    if (next.key < leading) break;  // no waiting vertex can beat it
+    popEntry(waiting_);
+    const int v = next.vertex;
+    const CrackPlace place = fanOf(mesh, corners, stress, v, fan_);
+    if (!unbounded && !sharpened_[v] && place != CrackPlace::Tip) {
+      // Before searching the whole fan, the cheaper piecewise bound: most vertices of a loaded
+      // sheet that pass the fan's bound are settled by it (they stay below 1), and the others wait
+      // again behind the leader if it already beats them.
+      sharpened_[v] = 1;
+      bound_[v] = std::min(bound_[v], omegaBoundAt(fan_, *table_, weftAngleRad_, 1.0, kBoundPieces, counts));
+      if (bound_[v] < 1.0) continue;
+      if (bound_[v] < leading) {
+        pushEntry(waiting_, Entry{bound_[v], v, version_[v]});
+        continue;
+      }
     }
-    if (bound < winner.ratio) break;  // no vertex left can beat it (ties are still evaluated)
-    if (!evaluated_[v]) {
-      const CrackPlace place = fanOf(mesh, corners, stress, v, fan_);
-      best_[v] = candidateAt(mesh, v, fan_, place, bestLineOf(mesh, stress, v, place, counts));
-      evaluated_[v] = 1;
-    }
-    const TearCandidate& line = best_[v];
-    if (line.ratio > winner.ratio || (line.ratio == winner.ratio && line.vertex < winner.vertex)) winner = line;
+    best_[v] = candidateAt(mesh, v, fan_, place, bestLineOf(mesh, stress, v, place, counts));
+    evaluated_[v] = 1;
+    const double ratio = best_[v].ratio >= 0.0 ? best_[v].ratio : 0.0;  // NaN never leads
+    pushEntry(unbounded ? unboundedHeap_ : evaluatedHeap_, Entry{ratio, v, version_[v]});
   }
-  if (!(winner.ratio > 1.0)) return std::nullopt;
-  return winner;
+  const Entry* tip = unboundedHeap_.empty() ? nullptr : &unboundedHeap_.front();
+  const Entry* other = evaluatedHeap_.empty() ? nullptr : &evaluatedHeap_.front();
+  const Entry* winner = tip != nullptr && tip->key > 1.0 ? tip : better(tip, other) ? tip : other;
+  if (winner == nullptr || !(winner->key > 1.0)) return std::nullopt;
+  return best_[winner->vertex];
 }
 
 TearCandidate TearSearch::bestLineOf(const ClothMesh& mesh, const std::vector<Mat2>& stress, int vertex,
@@ -197,7 +286,7 @@ TearCandidate TearSearch::tipLineAt(const ClothMesh& mesh, const std::vector<Tri
 }
 
 bool TearSearch::nearCrack(const ClothMesh& mesh, const Vec2& restPosition, double radius) const {
-  for (int v = 0; v < static_cast<int>(place_.size()); ++v) {
+  for (int v : crackVertices_) {
     if (place_[v] == CrackPlace::None || !holds(mesh, triangleAt_[v], v)) continue;
     const Triangle& t = mesh.tris[triangleAt_[v]];
     if ((t.rest[cornerOf(t, v)] - restPosition).norm() < radius) return true;

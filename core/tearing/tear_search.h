@@ -54,10 +54,21 @@ class TearSearch {
   // The vertex is not offered again this step (every line at it was refused, or its crack has
   // run as far as it may this step).
   void exclude(int vertex);
+  // The vertex is not offered as a crack start this step (it is still incubating); it is offered
+  // again if a crack reaches it, as that crack's tip.
+  void hold(int vertex);
+  // Whether some line at the vertex, as a crack start (not a tip), has omega > 1. The line at
+  // `hintAngle` (last step's best) is tried first: a vertex whose load barely moved is settled by
+  // one line instead of its whole fan. `angle` gets a line with omega > 1 when there is one.
+  bool overloadedAsStart(const ClothMesh& mesh, const std::vector<TriangleCorners>& corners,
+                         const std::vector<Mat2>& stress, int vertex, double hintAngle, double& angle,
+                         TearSearchCounts& counts);
 
  private:
   void lookAt(const ClothMesh& mesh, const std::vector<TriangleCorners>& corners, const std::vector<Mat2>& stress,
               int vertex, TearSearchCounts& counts);
+  void boundAt(const ClothMesh& mesh, const std::vector<TriangleCorners>& corners, const std::vector<Mat2>& stress,
+               int vertex, TearSearchCounts& counts);
   CrackPlace fanOf(const ClothMesh& mesh, const std::vector<TriangleCorners>& corners, const std::vector<Mat2>& stress,
              int vertex, StressFan& fan) const;
   double strengthScaleAt(const ClothMesh& mesh, int vertex, const StressFan& fan) const;
@@ -78,7 +89,22 @@ class TearSearch {
   std::vector<TearCandidate> best_;      // per vertex: its best line, valid when evaluated_
   std::vector<char> evaluated_;
   std::vector<char> excluded_;
+  std::vector<char> held_;
+  std::vector<char> sharpened_;          // per vertex: bound_ is already the piecewise bound
   std::vector<CrackPlace> place_;        // per vertex, as last looked at
+  std::vector<int> crackVertices_;       // every vertex once seen on a crack (place_ says if it still is)
+  // Per vertex: bumped whenever it is looked at again, so heap entries from before are stale.
+  std::vector<unsigned> version_;
+  struct Entry {
+    double key;  // bound (waiting) or omega (evaluated)
+    int vertex;
+    unsigned version;
+  };
+  std::vector<Entry> waiting_;    // max-heap by bound: not yet evaluated since last looked at
+  std::vector<Entry> evaluatedHeap_;  // max-heap by omega: evaluated starts (and tips with a finite bound)
+  std::vector<Entry> unboundedHeap_;  // max-heap by omega: evaluated vertices without a bound (tips
+                                      // that read ahead; every vertex when the bound is off)
+  bool offerable(const Entry& entry) const;
   StressFan fan_;                        // reused
 };
 

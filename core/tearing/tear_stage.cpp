@@ -105,6 +105,27 @@ void TearStage::materialsChanged(const Scene& scene) {
   runs_ = scene.stages.tearing && anyTable;
 }
 
+bool TearStage::incubated(const Incubating& vertex, double time, double dt) const {
+  return time - vertex.since >= spec_.incubation - 1e-9 * dt;
+}
+
+void TearStage::holdIncubating(const Cloth& cloth, const std::vector<TriangleCorners>& corners,
+                               const std::unordered_map<int, Incubating>& before, double time, double dt,
+                               std::unordered_map<int, Incubating>& now) {
+  // In vertex order, so the work done does not depend on the map's order.
+  std::vector<std::pair<int, Incubating>> waiting(before.begin(), before.end());
+  std::sort(waiting.begin(), waiting.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  for (auto [vertex, incubating] : waiting) {
+    if (incubated(incubating, time, dt)) continue;  // offered as usual: it may start a crack now
+    if (!search_.overloadedAsStart(cloth.mesh, corners, stress_, vertex, incubating.angle, incubating.angle,
+                                   stats_.search)) {
+      continue;  // its omega fell to 1 or below: its clock stops
+    }
+    now[vertex] = incubating;
+    search_.hold(vertex);
+  }
+}
+
 std::vector<TopologyChange> TearStage::run(std::vector<Cloth>& cloths, double time, double dt, StageProfile& profile) {
   std::vector<TopologyChange> changed(cloths.size());
   if (!runs_) return changed;
@@ -127,8 +148,8 @@ TopologyChange TearStage::tearCloth(Cloth& cloth, int clothIndex, double time, d
   if (corners.size() != cloth.mesh.tris.size()) corners = triangleCorners(cloth.mesh);
   if (overshoot_.size() != corners_.size()) overshoot_.resize(corners_.size());
   if (overloadedSince_.size() != corners_.size()) overloadedSince_.resize(corners_.size());
-  const std::unordered_map<int, double>& overloadedBefore = overloadedSince_[clothIndex];
-  std::unordered_map<int, double> overloadedNow;  // the vertices offered as crack starts this step
+  const std::unordered_map<int, Incubating>& overloadedBefore = overloadedSince_[clothIndex];
+  std::unordered_map<int, Incubating> overloadedNow;  // the vertices offered as crack starts this step
   {
     StageTimer timer(profile, "tear_stress");
     tensileStresses(cloth, localStress_);
@@ -145,6 +166,7 @@ TopologyChange TearStage::tearCloth(Cloth& cloth, int clothIndex, double time, d
   {
     StageTimer timer(profile, "tear_search");
     search_.start(cloth.mesh, corners, stress_, table, cloth.weftAngleRad, searchSettings_, stats_.search);
+    if (spec_.incubation > 0.0) holdIncubating(cloth, corners, overloadedBefore, time, dt, overloadedNow);
   }
   // A crack tip runs at most this far per step (m); without propagation the stage stops after
   // maxTearsPerStep tears instead.
@@ -178,9 +200,12 @@ TopologyChange TearStage::tearCloth(Cloth& cloth, int clothIndex, double time, d
     const bool continues = fronts.frontAt.contains(vertex);
     const bool starts = !continues && !best->crackTip;
     if (starts && spec_.incubation > 0.0) {
+      // Held vertices are never offered as starts: this one has waited long enough, or its omega
+      // has just gone above 1.
       const auto since = overloadedBefore.find(vertex);
-      overloadedNow[vertex] = since != overloadedBefore.end() ? since->second : time - dt;
-      if (time - overloadedNow[vertex] < spec_.incubation - 1e-9 * dt) {
+      overloadedNow[vertex] =
+          Incubating{since != overloadedBefore.end() ? since->second.since : time - dt, best->angle};
+      if (!incubated(overloadedNow[vertex], time, dt)) {
         search_.exclude(vertex);
         continue;
       }

@@ -79,6 +79,15 @@ class TearStage {
  private:
   // One cloth's step; returns what it changed.
   TopologyChange tearCloth(Cloth& cloth, int clothIndex, double time, double dt, StageProfile& profile);
+  struct Incubating;
+  // Whether the vertex has been overloaded for the incubation time at the end of this step.
+  bool incubated(const Incubating& vertex, double time, double dt) const;
+  // The vertices still incubating whose omega stays above 1 are kept in `now` and held from
+  // starting a crack this step, at the cost of one line each where their load barely moved (not a
+  // search of their whole fan, as offering them would cost).
+  void holdIncubating(const Cloth& cloth, const std::vector<TriangleCorners>& corners,
+                      const std::unordered_map<int, Incubating>& before, double time, double dt,
+                      std::unordered_map<int, Incubating>& now);
 
   TearingSpec spec_;
   TearSearchSettings searchSettings_;
@@ -89,9 +98,12 @@ class TearStage {
   NonlocalStress nonlocal_;
   std::vector<std::vector<TriangleCorners>> corners_;  // per cloth, patched after each tear
   TearSearch search_;
-  // per cloth: vertex -> when its omega went above 1 (kept while the vertex stays above 1), for
-  // the incubation of new cracks
-  std::vector<std::unordered_map<int, double>> overloadedSince_;
+  // A vertex whose omega is above 1, waiting out the incubation before it may start a crack.
+  struct Incubating {
+    double since = 0.0;  // when its omega went above 1 (s); kept while it stays above 1
+    double angle = 0.0;  // its last line above 1 (rad, material space): tried first next step
+  };
+  std::vector<std::unordered_map<int, Incubating>> overloadedSince_;  // per cloth
   std::vector<std::unordered_map<int, double>> overshoot_;  // per cloth: crack tip -> metres run past its
                                                             // last step's reach, owed to the next
   std::vector<TearRecord> log_;

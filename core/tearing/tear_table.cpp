@@ -28,6 +28,16 @@ double requiredStrength(const TearTable& table, double alphaDeg) {
   return ((1.0 - f) * low + f * high) * table.unitNPerM;
 }
 
+double weakestStrengthBetween(const TearTable& table, double fromDeg, double toDeg) {
+  if (!(toDeg - fromDeg < 180.0)) return weakestStrength(table);
+  double weakest = std::min(requiredStrength(table, fromDeg), requiredStrength(table, toDeg));
+  const double spacing = 180.0 / static_cast<double>(table.strength.size());
+  for (double direction = std::ceil(fromDeg / spacing) * spacing; direction <= toDeg; direction += spacing) {
+    weakest = std::min(weakest, requiredStrength(table, direction));
+  }
+  return weakest;
+}
+
 double weakestStrength(const TearTable& table) {
   return *std::min_element(table.strength.begin(), table.strength.end()) * table.unitNPerM;
 }

@@ -42,6 +42,11 @@ double requiredStrength(const TearTable& table, double alphaDeg);
 // smallest table entry. A vertex whose separation strength cannot reach it cannot tear.
 double weakestStrength(const TearTable& table);
 
+// The smallest required strength (N/m) over the directions [fromDeg, toDeg] (fromDeg <= toDeg,
+// any real numbers: periodic over 180): the ends and every table direction between them, as the
+// interpolation is linear in between.
+double weakestStrengthBetween(const TearTable& table, double fromDeg, double toDeg);
+
 // The direction of table entry k, degrees from V.
 double tableDirectionDeg(const TearTable& table, int k);
 
