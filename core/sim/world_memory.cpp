@@ -108,8 +108,9 @@ std::size_t ContactStage::heapBytes() const {
 }
 
 std::size_t NonlocalStress::heapBytes() const {
-  return weft::heapBytes(centroid_) + weft::heapBytes(area_) + weft::heapBytes(lip_) + weft::heapBytes(stamp_) +
-         weft::heapBytes(region_);
+  return weft::heapBytes(centroid_) + weft::heapBytes(area_) + weft::heapBytes(lip_) + weft::heapBytes(neighbours_) +
+         weft::heapBytes(scale_) + weft::heapBytes(stamp_) + weft::heapBytes(region_) + weft::heapBytes(hot_) +
+         weft::heapBytes(needed_) + weft::heapBytes(vertexNeeded_);
 }
 
 std::size_t TearSearch::heapBytes() const {
@@ -121,7 +122,7 @@ std::size_t TearSearch::heapBytes() const {
 }
 
 std::size_t TearStage::heapBytes() const {
-  std::size_t bytes = weft::heapBytes(localStress_) + weft::heapBytes(stress_) + nonlocal_.heapBytes() +
+  std::size_t bytes = weft::heapBytes(localStress_) + weft::heapBytes(stress_) + weft::heapBytes(nonlocal_) +
                       weft::heapBytes(corners_) + search_.heapBytes() + weft::heapBytes(log_);
   for (const auto& tips : overshoot_) bytes += weft::heapBytes(tips);
   for (const auto& waiting : overloadedSince_) bytes += weft::heapBytes(waiting);

@@ -7,8 +7,9 @@ namespace weft {
 
 namespace {
 
-// A triangle whose average depends on a changed one may lie a little beyond the radius from it
-// when the walk to it bends around a crack's end: the patch looks this much further.
+// A triangle whose neighbourhood (and so its average) depends on a changed one may lie a little
+// beyond the radius from it when the walk to it bends around a crack's end: the patch looks this
+// much further.
 constexpr double kPatchReach = 1.25;
 
 }  // namespace
@@ -25,6 +26,8 @@ void NonlocalStress::updateCentroids(const ClothMesh& mesh, const std::vector<in
   area_.resize(count, 0.0);
   lip_.resize(count, 0);
   stamp_.resize(count, 0);
+  neighbours_.resize(count);
+  scale_.resize(count, 0.0);
   for (int t : triangles) {
     const Triangle& tri = mesh.tris[t];
     centroid_[t] = (tri.rest[0] + tri.rest[1] + tri.rest[2]) / 3.0;
@@ -53,9 +56,10 @@ void NonlocalStress::gather(const ClothMesh& mesh, int t, double reach) {
   }
 }
 
-Mat2 NonlocalStress::averageAt(const ClothMesh& mesh, const std::vector<Mat2>& local, int t) {
+void NonlocalStress::buildNeighbours(const ClothMesh& mesh, int t) {
   gather(mesh, t, radius_);
-  Mat2 sum = Mat2::Zero();
+  std::vector<Neighbour>& list = neighbours_[t];
+  list.clear();
   double weights = 0.0;
   const double inverseRadius2 = 1.0 / (radius_ * radius_);
   for (int u : region_) {
@@ -63,42 +67,79 @@ Mat2 NonlocalStress::averageAt(const ClothMesh& mesh, const std::vector<Mat2>& l
     const double d2 = (centroid_[u] - centroid_[t]).squaredNorm() * inverseRadius2;
     const double bell = (1.0 - d2) * (1.0 - d2);
     const double w = area_[u] * bell;
-    sum += w * local[u];
+    if (!(w > 0.0)) continue;  // adds nothing to the average: the list is what it reads
+    list.push_back({u, static_cast<float>(w)});
     weights += w;
   }
-  return weights > 0.0 ? Mat2(sum / weights) : local[t];
+  // Stored as shares of the sum, then the sum of the rounded shares taken in double: the average
+  // is an exact weighted mean of its list (a uniform stress is itself), its weights rounded.
+  double shares = 0.0;
+  for (Neighbour& n : list) {
+    n.weight = static_cast<float>(static_cast<double>(n.weight) / weights);
+    shares += n.weight;
+  }
+  scale_[t] = shares > 0.0 ? 1.0 / shares : 0.0;
 }
 
-void NonlocalStress::average(const ClothMesh& mesh, const std::vector<Mat2>& local, double radius, double threshold,
-                             std::vector<Mat2>& out) {
+Mat2 NonlocalStress::averageAt(const std::vector<Mat2>& local, int t) const {
+  if (scale_[t] == 0.0) return local[t];
+  Mat2 sum = Mat2::Zero();
+  for (const Neighbour& n : neighbours_[t]) sum += static_cast<double>(n.weight) * local[n.triangle];
+  return scale_[t] * sum;
+}
+
+void NonlocalStress::rebuild(const ClothMesh& mesh, double radius) {
   radius_ = radius;
-  threshold_ = threshold;
   centroid_.clear();
   area_.clear();
   lip_.clear();
+  neighbours_.clear();
+  scale_.clear();
   stamp_.assign(mesh.tris.size(), 0);
   currentStamp_ = 0;
   std::vector<int> all(mesh.tris.size());
   for (int t = 0; t < mesh.triangleCount(); ++t) all[t] = t;
   updateCentroids(mesh, all);
+  for (int t = 0; t < mesh.triangleCount(); ++t) buildNeighbours(mesh, t);
+  cachedTriangles_ = mesh.tris.size();
+  built_ = true;
+}
+
+void NonlocalStress::average(const ClothMesh& mesh, const std::vector<Mat2>& local, double radius, double threshold,
+                             std::vector<Mat2>& out) {
+  if (!built_ || radius != radius_ || mesh.tris.size() != cachedTriangles_) rebuild(mesh, radius);
   out = local;
-  // The triangles within reach of a hot one, plus their vertex neighbours (a fan that holds one
-  // of them reads its neighbours' averages too): marked, then averaged.
-  std::vector<char> needed(mesh.tris.size(), 0);
-  for (int t = 0; t < mesh.triangleCount(); ++t) {
-    if (largestPrincipal(local[t]) < threshold) continue;
-    gather(mesh, t, kPatchReach * radius);
-    for (int u : region_) needed[u] = 1;
+  const int count = mesh.triangleCount();
+  hot_.assign(count, 0);
+  bool anyHot = false;
+  for (int t = 0; t < count; ++t) {
+    hot_[t] = largestPrincipal(local[t]) >= threshold;
+    anyHot = anyHot || hot_[t];
   }
-  std::vector<char> vertexNeeded(mesh.x.size(), 0);
-  for (int t = 0; t < mesh.triangleCount(); ++t) {
-    if (!needed[t]) continue;
-    for (int v : mesh.tris[t].v) vertexNeeded[v] = 1;
+  if (!anyHot) return;
+  // A triangle's average reads its list only, so unless the list holds a hot triangle the average
+  // stays below the threshold, as the local stress does. A lip is not in its own list: a hot one
+  // is averaged, or it would keep the stretch its average leaves out.
+  needed_.assign(count, 0);
+  for (int t = 0; t < count; ++t) {
+    bool need = hot_[t];
+    for (const Neighbour& n : neighbours_[t]) {
+      if (need) break;
+      need = hot_[n.triangle];
+    }
+    needed_[t] = need;
   }
-  for (int t = 0; t < mesh.triangleCount(); ++t) {
+  // Their vertex neighbours too: a fan that holds a needed triangle reads its other triangles'
+  // averages.
+  vertexNeeded_.assign(mesh.x.size(), 0);
+  for (int t = 0; t < count; ++t) {
+    if (!needed_[t]) continue;
+    for (int v : mesh.tris[t].v) vertexNeeded_[v] = 1;
+  }
+  for (int t = 0; t < count; ++t) {
     const Triangle& tri = mesh.tris[t];
-    if (needed[t] || vertexNeeded[tri.v[0]] || vertexNeeded[tri.v[1]] || vertexNeeded[tri.v[2]]) {
-      out[t] = averageAt(mesh, local, t);
+    if (needed_[t] || vertexNeeded_[tri.v[0]] || vertexNeeded_[tri.v[1]] || vertexNeeded_[tri.v[2]]) {
+      out[t] = averageAt(local, t);
     }
   }
 }
@@ -106,15 +147,22 @@ void NonlocalStress::average(const ClothMesh& mesh, const std::vector<Mat2>& loc
 std::vector<int> NonlocalStress::patch(const ClothMesh& mesh, const std::vector<Mat2>& local,
                                        const std::vector<int>& changed, std::vector<Mat2>& out) {
   out.resize(mesh.tris.size(), Mat2::Zero());
-  updateCentroids(mesh, changed);
+  // Triangles the tear added are changed ones too, whether or not the caller listed them.
+  std::vector<int> seeds = changed;
+  for (std::size_t t = cachedTriangles_; t < mesh.tris.size(); ++t) seeds.push_back(static_cast<int>(t));
+  updateCentroids(mesh, seeds);
   std::vector<int> dirty;
-  for (int t : changed) {
+  for (int t : seeds) {
     gather(mesh, t, kPatchReach * radius_);
     dirty.insert(dirty.end(), region_.begin(), region_.end());
   }
   std::sort(dirty.begin(), dirty.end());
   dirty.erase(std::unique(dirty.begin(), dirty.end()), dirty.end());
-  for (int t : dirty) out[t] = averageAt(mesh, local, t);
+  for (int t : dirty) {
+    buildNeighbours(mesh, t);
+    out[t] = averageAt(local, t);
+  }
+  cachedTriangles_ = mesh.tris.size();
   return dirty;
 }
 

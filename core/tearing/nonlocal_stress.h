@@ -25,9 +25,13 @@
 // up to 70 degrees at the start of a step, on some meshes and not others.
 //
 // Cost: an average is needed only where the cloth could tear. The average of tensile stresses is
-// no larger (in its largest principal value) than the largest of them, so only the triangles within
-// the radius of one whose own stress could reach `threshold` are averaged; elsewhere the local
-// stress is kept (it is below the threshold too). A quiet cloth costs one pass over its triangles.
+// no larger (in its largest principal value) than the largest of them, so only a triangle whose
+// neighbourhood holds one whose own stress could reach `threshold` is averaged; elsewhere the local
+// stress is kept (it is below the threshold too). The neighbourhoods and their weights depend on
+// the mesh alone, not on the stress, so they are kept from step to step (a walk per triangle cost
+// 14 ms a step at 64^2, ~100 triangles per disc) and rebuilt around each tear by `patch`: a step
+// costs one pass over the triangles plus, where the cloth is hot, one pass over their lists.
+#include <cstddef>
 #include <vector>
 
 #include "mesh/cloth_mesh.h"
@@ -37,35 +41,64 @@ namespace weft {
 
 class NonlocalStress {
  public:
+  // One triangle of a neighbourhood and its share of the average (rest area times the bell).
+  struct Neighbour {
+    int triangle = 0;
+    // float: the lists are most of the cache, and the editor's timeline keeps a copy of it per
+    // frame; the sum is corrected in double (`scale_`), so the average of a uniform stress is
+    // still that stress to double precision.
+    float weight = 0.0f;
+  };
+
   std::size_t heapBytes() const;  // util/heap_bytes.h (defined in sim/world_memory.cpp)
   // `local` (per triangle sigma+, material frame) averaged into `out` within `radius` (m), where
   // some triangle within reach has a largest principal stress of at least `threshold` (N/m).
+  // The neighbourhoods are those of the last call or patch, unless the radius or the triangle
+  // count changed since: between two calls a mesh must change only through tears that `patch`
+  // was told of (as the tear stage's other caches assume), so one object serves one mesh.
   void average(const ClothMesh& mesh, const std::vector<Mat2>& local, double radius, double threshold,
                std::vector<Mat2>& out);
-  // After a tear changed the listed triangles (their local stress is already updated): the
-  // averages that depend on them, recomputed on the new mesh. Returns the triangles whose average
-  // was recomputed.
+  // After a tear changed the listed triangles (their local stress is already updated; triangles
+  // the tear added need not be listed): the neighbourhoods and averages that depend on them,
+  // recomputed on the new mesh. Returns the triangles whose average was recomputed. Follows an
+  // `average` call on the same mesh.
   std::vector<int> patch(const ClothMesh& mesh, const std::vector<Mat2>& local, const std::vector<int>& changed,
                          std::vector<Mat2>& out);
 
  private:
+  // The cache from scratch: every triangle's centroid, area, lip flag and neighbourhood.
+  void rebuild(const ClothMesh& mesh, double radius);
   // The triangles whose centroid lies within `reach` of triangle t's, connected to it through
   // shared edges (t first), into `region_`.
   void gather(const ClothMesh& mesh, int t, double reach);
-  Mat2 averageAt(const ClothMesh& mesh, const std::vector<Mat2>& local, int t);
+  // Triangle t's neighbourhood at `radius_` (its gather, lips left out) into `neighbours_[t]`.
+  void buildNeighbours(const ClothMesh& mesh, int t);
+  Mat2 averageAt(const std::vector<Mat2>& local, int t) const;
   void updateCentroids(const ClothMesh& mesh, const std::vector<int>& triangles);
 
   double radius_ = 0.0;
-  double threshold_ = 0.0;
+  std::size_t cachedTriangles_ = 0;  // the triangle count the cache was built or last patched for
+  bool built_ = false;
   std::vector<Vec2> centroid_;   // material space, per triangle
   std::vector<double> area_;     // rest area, per triangle
   std::vector<char> lip_;        // per triangle: it has a torn border edge (left out of the averages)
+  // Per triangle, its neighbourhood in gather order (so a cached average sums exactly as a fresh
+  // one). A vector each rather than one packed array: a tear rebuilds a few hundred lists of new
+  // lengths, which a packed array could only take by moving all the others.
+  std::vector<std::vector<Neighbour>> neighbours_;
+  std::vector<double> scale_;    // per triangle: 1 / the sum of its list's weights (0: no list, local kept)
   std::vector<int> stamp_;       // per triangle: the gather that last visited it
   int currentStamp_ = 0;
   std::vector<int> region_;      // the last gather, t first
+  std::vector<char> hot_;        // per triangle, this call: its local stress reaches the threshold
+  std::vector<char> needed_;     // per triangle, this call: its average could reach the threshold
+  std::vector<char> vertexNeeded_;  // per vertex, this call: it has a needed triangle
 };
 
 // The largest principal value of a symmetric 2x2 tensor.
 double largestPrincipal(const Mat2& s);
+
+// util/heap_bytes.h, for the tear stage's per-cloth vector of these.
+inline std::size_t heapBytes(const NonlocalStress& nonlocal) { return nonlocal.heapBytes(); }
 
 }  // namespace weft

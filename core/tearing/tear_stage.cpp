@@ -130,6 +130,7 @@ std::vector<TopologyChange> TearStage::run(std::vector<Cloth>& cloths, double ti
   std::vector<TopologyChange> changed(cloths.size());
   if (!runs_) return changed;
   if (corners_.size() != cloths.size()) corners_.resize(cloths.size());
+  if (nonlocal_.size() != cloths.size()) nonlocal_.resize(cloths.size());
   for (std::size_t c = 0; c < cloths.size(); ++c) {
     if (!cloths[c].material.tearTable) continue;
     changed[c] = tearCloth(cloths[c], static_cast<int>(c), time, dt, profile);
@@ -158,7 +159,7 @@ TopologyChange TearStage::tearCloth(Cloth& cloth, int clothIndex, double time, d
       // largest principal stress bounds zeta within pi: separation_strength.h's bound).
       const double threshold =
           kRunOnRatio * std::min(1.0, table.propagationFactor) * weakestStrength(table) / std::numbers::pi;
-      nonlocal_.average(cloth.mesh, localStress_, spec_.stressLength, threshold, stress_);
+      nonlocal_[clothIndex].average(cloth.mesh, localStress_, spec_.stressLength, threshold, stress_);
     } else {
       stress_ = localStress_;
     }
@@ -312,7 +313,7 @@ TopologyChange TearStage::tearCloth(Cloth& cloth, int clothIndex, double time, d
         }
         std::sort(seeds.begin(), seeds.end());
         seeds.erase(std::unique(seeds.begin(), seeds.end()), seeds.end());
-        restressed = nonlocal_.patch(cloth.mesh, localStress_, seeds, stress_);
+        restressed = nonlocal_[clothIndex].patch(cloth.mesh, localStress_, seeds, stress_);
       } else {
         stress_.resize(localStress_.size());
         for (int t : restressed) stress_[t] = localStress_[t];

@@ -95,7 +95,7 @@ class TearStage {
   bool runs_ = false;
   std::vector<Mat2> localStress_;  // sigma+ per triangle, as tensile_stress.h gives it
   std::vector<Mat2> stress_;       // what the search reads: localStress_, averaged when stress_length > 0
-  NonlocalStress nonlocal_;
+  std::vector<NonlocalStress> nonlocal_;  // per cloth: its neighbourhoods are its mesh's, patched after each tear
   std::vector<std::vector<TriangleCorners>> corners_;  // per cloth, patched after each tear
   TearSearch search_;
   // A vertex whose omega is above 1, waiting out the incubation before it may start a crack.

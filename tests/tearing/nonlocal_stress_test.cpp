@@ -3,6 +3,7 @@
 // converging where the local stress is singular.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <vector>
@@ -131,6 +132,82 @@ TEST(NonlocalStress, APatchAfterTearsEqualsAFreshAverage) {
   fresh.average(mesh, local, 0.12, 0.0, expected);
   ASSERT_EQ(out.size(), expected.size());
   for (std::size_t t = 0; t < out.size(); ++t) EXPECT_LT((out[t] - expected[t]).norm(), 1e-9) << "triangle " << t;
+}
+
+// Two averages agree to rounding, relative to the larger stress of the two.
+void expectSameAverages(const std::vector<Mat2>& got, const std::vector<Mat2>& expected) {
+  ASSERT_EQ(got.size(), expected.size());
+  for (std::size_t t = 0; t < got.size(); ++t) {
+    const double scale = std::max({got[t].norm(), expected[t].norm(), 1e-300});
+    EXPECT_LE((got[t] - expected[t]).norm(), 1e-12 * scale) << "triangle " << t;
+  }
+}
+
+// The neighbourhoods are kept from one call to the next (they depend on the mesh, not on the
+// stress): a second call with another stress reads as a fresh object's first, near a crack too.
+TEST(NonlocalStress, AKeptNeighbourhoodAveragesAnotherStressAsAFreshOne) {
+  ClothMesh mesh = grid(21);
+  TearGuards guards;
+  int torn = 0;
+  for (int iy = 20; iy >= 10; --iy) {
+    TopologyChange change;
+    if (tearThroughVertex(mesh, iy * 21 + 10, Vec2(0.0, 1.0), guards, 0.3, change)) ++torn;
+  }
+  ASSERT_GT(torn, 0);
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::vector<Mat2> first(mesh.tris.size()), second(mesh.tris.size());
+  for (Mat2& s : first) s = tensor(100.0 * unit(random), 50.0 * unit(random), 10.0 * unit(random));
+  for (Mat2& s : second) s = tensor(100.0 * unit(random), 50.0 * unit(random), 10.0 * unit(random));
+  for (double threshold : {0.0, 90.0}) {  // everywhere, and only around the hot triangles
+    NonlocalStress kept;
+    std::vector<Mat2> out;
+    kept.average(mesh, first, 0.12, threshold, out);
+    kept.average(mesh, second, 0.12, threshold, out);
+    NonlocalStress fresh;
+    std::vector<Mat2> expected;
+    fresh.average(mesh, second, 0.12, threshold, expected);
+    expectSameAverages(out, expected);
+  }
+}
+
+// After tears and their patches, the next step's average on the patched object reads the torn
+// mesh as a fresh object does: no neighbourhood kept from before a tear reaches across it.
+TEST(NonlocalStress, AnAverageAfterPatchesEqualsAFreshOne) {
+  ClothMesh mesh = grid(21);
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::vector<Mat2> local(mesh.tris.size());
+  for (Mat2& s : local) s = tensor(100.0 * unit(random), 50.0 * unit(random), 10.0 * unit(random));
+  NonlocalStress patched;
+  std::vector<Mat2> out;
+  patched.average(mesh, local, 0.12, 0.0, out);
+  TearGuards guards;
+  int tears = 0;
+  for (int attempt = 0; attempt < 200 && tears < 25; ++attempt) {
+    const int vertex = static_cast<int>(unit(random) * mesh.vertexCount()) % mesh.vertexCount();
+    const double angle = unit(random) * 3.14159;
+    TopologyChange change;
+    if (!tearThroughVertex(mesh, vertex, Vec2(std::cos(angle), std::sin(angle)), guards, 0.3, change)) continue;
+    ++tears;
+    local.resize(mesh.tris.size());
+    for (int t : change.changedTriangles) local[t] = tensor(100.0 * unit(random), 50.0 * unit(random), 0.0);
+    std::vector<int> seeds = change.changedTriangles;
+    for (int e : change.changedEdges) {
+      for (int t : mesh.edges[e].tri) {
+        if (t != kNone) seeds.push_back(t);
+      }
+    }
+    patched.patch(mesh, local, seeds, out);
+  }
+  ASSERT_GT(tears, 10);
+  // The next step: a new stress everywhere, the lists kept.
+  for (Mat2& s : local) s = tensor(100.0 * unit(random), 50.0 * unit(random), 10.0 * unit(random));
+  patched.average(mesh, local, 0.12, 0.0, out);
+  NonlocalStress fresh;
+  std::vector<Mat2> expected;
+  fresh.average(mesh, local, 0.12, 0.0, expected);
+  expectSameAverages(out, expected);
 }
 
 TEST(NonlocalStress, OnlyTrianglesNearAStressThatCouldTearAreAveraged) {
