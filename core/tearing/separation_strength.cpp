@@ -114,21 +114,44 @@ FanSector makeSector(double start, double span, const Mat2& stress) {
   return sector;
 }
 
-double separationStrength(const StressFan& fan, double angle) {
+LineSides lineSides(const StressFan& fan, double angle) {
   const Vec2 gLine = gAt(angle);
   if (fan.closed) {
     // Side 1 lies counter-clockwise of the line's direction, side 2 clockwise (Figure 2.9);
     // g(angle + pi) = -g(angle).
-    const Vec2 q1 = arcForce(fan, angle, std::numbers::pi, gLine, -gLine);
-    const Vec2 q2 = arcForce(fan, angle + std::numbers::pi, std::numbers::pi, -gLine, gLine);
-    return 0.5 * balancedPull(q1, q2);
+    return {arcForce(fan, angle, std::numbers::pi, gLine, -gLine),
+            arcForce(fan, angle + std::numbers::pi, std::numbers::pi, -gLine, gLine)};
   }
   const double ray = wrapFrom(angle, fan.openStart);
   const double before = std::min(ray - fan.openStart, fan.openSpan);
   const Vec2 gStart = gAt(fan.openStart), gEnd = gAt(fan.openStart + fan.openSpan);
-  const Vec2 q1 = arcForce(fan, fan.openStart, before, gStart, gLine);
-  const Vec2 q2 = arcForce(fan, fan.openStart + before, fan.openSpan - before, gLine, gEnd);
-  return balancedPull(q1, q2);
+  return {arcForce(fan, fan.openStart, before, gStart, gLine),
+          arcForce(fan, fan.openStart + before, fan.openSpan - before, gLine, gEnd)};
+}
+
+double separationFromSides(const StressFan& fan, const LineSides& sides) {
+  return (fan.closed ? 0.5 : 1.0) * balancedPull(sides.q1, sides.q2);
+}
+
+double separationStrength(const StressFan& fan, double angle) { return separationFromSides(fan, lineSides(fan, angle)); }
+
+double sideForceRate(const StressFan& fan) {
+  double largest = 0.0;
+  for (const FanSector& sector : fan.sectors) largest = std::max(largest, spectralNorm(sector.stress));
+  return (fan.closed ? 2.0 : 1.0) * largest;
+}
+
+double separationBoundNear(const StressFan& fan, const LineSides& sides, double drift) {
+  const double a = sides.q1.norm(), b = sides.q2.norm();
+  const double shortest = std::min(a, b) + drift;
+  // How far each side's direction may turn; a side shorter than the drift may point anywhere.
+  auto turn = [&](double length) { return drift < length ? std::asin(drift / length) : std::numbers::pi; };
+  const double apart = a > 0.0 && b > 0.0 ? std::acos(std::clamp(-sides.q1.dot(sides.q2) / (a * b), -1.0, 1.0))
+                                          : std::numbers::pi;  // phi, between q1 and -q2
+  const double closest = std::max(0.0, apart - turn(a) - turn(b));
+  const double bound = closest >= 0.5 * std::numbers::pi ? 0.0 : shortest * std::cos(0.5 * closest);
+  // The margin covers rounding, so the bound never settles a line that would tear.
+  return (fan.closed ? 0.5 : 1.0) * bound * (1.0 + 1e-9) + 1e-12 * drift;
 }
 
 double separationStrengthBound(const StressFan& fan) {
@@ -153,37 +176,6 @@ double separationStrengthBound(const StressFan& fan) {
   const double byMean = fan.closed ? spectralNorm(mean) + 0.25 * deviation
                                    : 2.0 * std::sin(0.25 * fan.openSpan) * spectralNorm(mean) + 0.5 * deviation;
   return std::min(byArcs, byMean);
-}
-
-void separationStrengthPieceBounds(const StressFan& fan, int samples, std::vector<SeparationPieceBound>& out) {
-  out.clear();
-  double largest = 0.0;  // the fan's largest principal stress
-  for (const FanSector& sector : fan.sectors) largest = std::max(largest, spectralNorm(sector.stress));
-  const double from = fan.closed ? 0.0 : fan.openStart;
-  const double range = fan.closed ? std::numbers::pi : fan.openSpan;
-  if (!(range > 0.0) || samples < 1) return;
-  const double width = range / samples;
-  const Vec2 gStart = gAt(fan.openStart), gEnd = gAt(fan.openStart + fan.openSpan);
-  for (int k = 0; k < samples; ++k) {
-    SeparationPieceBound piece;
-    piece.angle = from + (k + 0.5) * width;
-    piece.halfWidth = 0.5 * width;
-    const Vec2 gLine = gAt(piece.angle);
-    double q1 = 0.0, q2 = 0.0;
-    if (fan.closed) {
-      q1 = arcForce(fan, piece.angle, std::numbers::pi, gLine, -gLine).norm();
-      q2 = arcForce(fan, piece.angle + std::numbers::pi, std::numbers::pi, -gLine, gLine).norm();
-    } else {
-      const double before = (k + 0.5) * width;
-      q1 = arcForce(fan, fan.openStart, before, gStart, gLine).norm();
-      q2 = arcForce(fan, piece.angle, fan.openSpan - before, gLine, gEnd).norm();
-    }
-    // Both ends of a closed fan's line sweep (2 sigma per radian); a ray sweeps one.
-    const double drift = (fan.closed ? 2.0 : 1.0) * largest * piece.halfWidth;
-    // The margin covers rounding, so the bound never settles a vertex that would tear.
-    piece.zeta = (fan.closed ? 0.5 : 1.0) * (std::min(q1, q2) + drift) * (1.0 + 1e-9);
-    out.push_back(piece);
-  }
 }
 
 }  // namespace weft

@@ -75,18 +75,24 @@ double separationStrength(const StressFan& fan, double angle);
 // whose bound is below the weakest required strength cannot tear in any direction.
 double separationStrengthBound(const StressFan& fan);
 
-// Bounds of separationStrength within each of `samples` even pieces of the lines' half turn (a
-// closed fan) or of the rays' open fan: piece k is centred on `angle` and spans `halfWidth` either
-// side of it. The traction of a side changes with the line's angle by at most the two ends'
-// stresses (d q / d theta = sigma(theta + pi) r(theta + pi) - sigma(theta) r(theta)), so the
-// largest principal stress of the fan bounds how far |q| moves from the piece's centre, and
-// zeta <= min(|q1|, |q2|) (halved at an interior vertex). Cheaper than the dense search by the
-// ratio of their sample counts; a vertex whose pieces all stay below its strengths is settled.
-struct SeparationPieceBound {
-  double angle = 0.0;      // rad, material space
-  double halfWidth = 0.0;  // rad
-  double zeta = 0.0;       // N/m, no line in the piece separates more
+// The forces the two sides of a line (or ray) at `angle` exert on the vertex (q1, q2 above).
+struct LineSides {
+  Vec2 q1 = Vec2::Zero();
+  Vec2 q2 = Vec2::Zero();
 };
-void separationStrengthPieceBounds(const StressFan& fan, int samples, std::vector<SeparationPieceBound>& out);
+LineSides lineSides(const StressFan& fan, double angle);
+// zeta from the sides' forces (Eq. 2.70-2.71, halved at an interior vertex).
+double separationFromSides(const StressFan& fan, const LineSides& sides);
+
+// How fast a side's force can change as the line turns (N/m per rad): d q1 / d theta =
+// sigma(theta + pi) r(theta + pi) - sigma(theta) r(theta) for a line (r the radial unit vector),
+// sigma(theta) r(theta) for a ray, so at most twice (once) the fan's largest principal stress.
+double sideForceRate(const StressFan& fan);
+
+// An upper bound of zeta over every line whose sides' forces lie within `drift` of `sides`'
+// (N/m): with a = q1, b = -q2 and phi the angle between them, zeta = min(|a|, |b|) cos(phi / 2)
+// (zero when phi >= 90 degrees); each side's length grows by at most drift and its direction turns
+// by at most asin(drift / |side|). Tends to zeta itself as drift shrinks.
+double separationBoundNear(const StressFan& fan, const LineSides& sides, double drift);
 
 }  // namespace weft

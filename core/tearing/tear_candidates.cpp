@@ -97,19 +97,97 @@ TearCandidate bestLineAt(const StressFan& fan, const TearTable& table, double we
                              counts);
 }
 
+namespace {
+
+// A piece of a fan's lines: those within halfWidth of the line at `angle`.
+struct LinePiece {
+  double bound = 0.0;  // no line of the piece has a higher omega
+  double angle = 0.0;  // rad, material space
+  double halfWidth = 0.0;
+  double omega = 0.0;  // of the line at `angle` itself
+};
+
+LinePiece boundPiece(const StressFan& fan, const TearTable& table, double weftAngleRad, double scale, double rate,
+                     double angle, double halfWidth) {
+  LinePiece piece;
+  piece.angle = angle;
+  piece.halfWidth = halfWidth;
+  const LineSides sides = lineSides(fan, angle);
+  const double alpha = angleFromWarpDeg(angle, weftAngleRad);
+  piece.omega = separationFromSides(fan, sides) / (scale * requiredStrength(table, alpha));
+  const double halfWidthDeg = halfWidth * kRadToDeg;
+  piece.bound = separationBoundNear(fan, sides, rate * halfWidth) /
+                (scale * weakestStrengthBetween(table, alpha - halfWidthDeg, alpha + halfWidthDeg));
+  return piece;
+}
+
+// The pieces a fan's lines (a closed fan's half turn, an open fan's rays) start as: 5 degrees each
+// over a half turn.
+constexpr int kFirstPieces = 18;
+
+template <typename Visit>
+void forEachFirstPiece(const StressFan& fan, const Visit& visit) {
+  double from = 0.0, range = 0.0;
+  sampledRange(fan, kNoTurnLimit, from, range);
+  if (!(range > 0.0)) return;
+  const double width = range / kFirstPieces;
+  for (int k = 0; k < kFirstPieces; ++k) visit(from + (k + 0.5) * width, 0.5 * width);
+}
+
+}  // namespace
+
 double omegaBoundAt(const StressFan& fan, const TearTable& table, double weftAngleRad, double strengthScale,
-                    int pieces, TearSearchCounts& counts) {
-  thread_local std::vector<SeparationPieceBound> bounds;  // reused: no allocation per vertex
-  separationStrengthPieceBounds(fan, pieces, bounds);
-  counts.linesEvaluated += pieces;
+                    TearSearchCounts& counts) {
+  const double rate = sideForceRate(fan);
   double bound = 0.0;
-  for (const SeparationPieceBound& piece : bounds) {
-    const double alpha = angleFromWarpDeg(piece.angle, weftAngleRad);
-    const double halfWidthDeg = piece.halfWidth * kRadToDeg;
-    const double weakest = strengthScale * weakestStrengthBetween(table, alpha - halfWidthDeg, alpha + halfWidthDeg);
-    bound = std::max(bound, piece.zeta / weakest);
-  }
+  forEachFirstPiece(fan, [&](double angle, double halfWidth) {
+    ++counts.linesEvaluated;
+    bound = std::max(bound, boundPiece(fan, table, weftAngleRad, strengthScale, rate, angle, halfWidth).bound);
+  });
   return bound;
+}
+
+bool anyLineAboveOneAt(const StressFan& fan, const TearTable& table, double weftAngleRad, double hintAngle,
+                       double& angle, TearSearchCounts& counts) {
+  if (std::isfinite(hintAngle)) {
+    ++counts.linesEvaluated;
+    if (separationStrength(fan, hintAngle) / requiredStrength(table, angleFromWarpDeg(hintAngle, weftAngleRad)) > 1.0) {
+      angle = hintAngle;
+      return true;
+    }
+  }
+  // Branch and bound over the fan's lines: the piece with the highest bound is split until a line
+  // above 1 is found or every piece's bound is at most 1. A piece narrower than kNarrowest whose
+  // bound still exceeds 1 holds lines within a hair of 1 (the bound tends to omega): left undecided
+  // as not above 1, as is a fan still undecided after kMostPieces pieces.
+  constexpr double kNarrowest = 1e-5;  // rad
+  constexpr int kMostPieces = 600;
+  const double rate = sideForceRate(fan);
+  std::vector<LinePiece> open;
+  auto order = [](const LinePiece& a, const LinePiece& b) { return a.bound < b.bound; };
+  bool found = false;
+  auto consider = [&](double at, double halfWidth) {
+    if (found) return;
+    ++counts.linesEvaluated;
+    const LinePiece piece = boundPiece(fan, table, weftAngleRad, 1.0, rate, at, halfWidth);
+    if (piece.omega > 1.0) {
+      angle = at;
+      found = true;
+    } else if (piece.bound > 1.0 && halfWidth > kNarrowest) {
+      open.push_back(piece);
+      std::push_heap(open.begin(), open.end(), order);
+    }
+  };
+  forEachFirstPiece(fan, consider);
+  for (int pieces = kFirstPieces; !found && !open.empty() && pieces < kMostPieces; pieces += 2) {
+    std::pop_heap(open.begin(), open.end(), order);
+    const LinePiece widest = open.back();
+    open.pop_back();
+    const double half = 0.5 * widest.halfWidth;
+    consider(widest.angle - half, half);
+    consider(widest.angle + half, half);
+  }
+  return found;
 }
 
 std::vector<TearCandidate> linesAboveOneAt(const StressFan& fan, const TearTable& table, double weftAngleRad,

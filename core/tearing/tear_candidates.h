@@ -37,6 +37,9 @@ struct TearSearchSettings {
   // The sharpest turn a crack takes at its tip (rad from straight on, the middle of its open fan);
   // rays further back run beside the crack's own lips.
   double maxKinkRad = kNoTurnLimit;
+  // > 0: a vertex within this distance (m, material space) of a crack starts no new crack; it may
+  // still tear as a crack's tip. Set by the tear stage (twice a tip's reach, tear_stage.cpp).
+  double startClearance = 0.0;
   bool onlyTheBest = false;   // with skipByBound: return only the best vertex's line (one tear per
                               // step), skipping every vertex whose bound cannot beat the best so far
 };
@@ -70,10 +73,17 @@ TearCandidate bestLineAt(const StressFan& fan, const TearTable& table, double we
                          double maxTurnRad = kNoTurnLimit);
 
 // A bound on omega over every line (or ray) of the fan, sharper than the fan's bound over its
-// weakest strength: the fan in `pieces` pieces, each bounded by separationStrengthPieceBounds over
-// the weakest strength within the piece's directions. Costs `pieces` line evaluations.
+// weakest strength: the fan's lines in 5 degree pieces, each bounded from its middle line's sides
+// (separationBoundNear) over the weakest strength within the piece's directions. Costs 36 lines.
 double omegaBoundAt(const StressFan& fan, const TearTable& table, double weftAngleRad, double strengthScale,
-                    int pieces, TearSearchCounts& counts);
+                    TearSearchCounts& counts);
+
+// Whether some line (or ray) of the fan has omega > 1 as a crack start, answered as early as
+// possible: the line at `hintAngle` first, then a branch and bound over pieces of the fan's lines
+// that splits only the pieces whose bound exceeds 1. `angle` gets the line found. For the
+// incubation of new cracks, which needs only whether a vertex is overloaded, not its best line.
+bool anyLineAboveOneAt(const StressFan& fan, const TearTable& table, double weftAngleRad, double hintAngle,
+                       double& angle, TearSearchCounts& counts);
 
 // The other ways a vertex could open, when its best line is refused by the mesh: every line with
 // omega > 1, best first (the thesis' lines; for dense lines, the local maxima of the sampling).

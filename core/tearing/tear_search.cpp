@@ -1,7 +1,9 @@
 #include "tearing/tear_search.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
+#include <numbers>
 #include <span>
 #include <utility>
 
@@ -34,9 +36,14 @@ CrackPlace crackPlaceOf(const ClothMesh& mesh, const VertexFan& fan) {
   return slit ? CrackPlace::Tip : CrackPlace::Lip;
 }
 
-// The pieces of a fan's piecewise bound (5 degrees each over a line's half turn): a twentieth of
-// the margin of a line's traction between the pieces' centres.
-constexpr int kBoundPieces = 36;
+// The line across the fan's mean largest principal stress: where an isotropic fabric tears, so the
+// first line to try when asking whether a vertex is overloaded at all.
+double principalLineAngle(const StressFan& fan) {
+  Mat2 mean = Mat2::Zero();
+  for (const FanSector& sector : fan.sectors) mean += sector.stress * sector.span;
+  // The largest principal direction is at 0.5 atan2(2 s01, s00 - s11); the line runs across it.
+  return 0.5 * std::atan2(2.0 * mean(0, 1), mean(0, 0) - mean(1, 1)) + 0.5 * std::numbers::pi;
+}
 
 // Heap order: the larger key first, then the lower vertex (ties go to the lower vertex id).
 struct HeapOrder {
@@ -88,6 +95,9 @@ void TearSearch::start(const ClothMesh& mesh, const std::vector<TriangleCorners>
   excluded_.assign(n, 0);
   held_.assign(n, 0);
   sharpened_.assign(n, 0);
+  gated_ = false;
+  mature_.clear();
+  newlyOverloaded_.clear();
   place_.assign(n, CrackPlace::None);
   version_.assign(n, 0);
   crackVertices_.clear();
@@ -108,6 +118,7 @@ void TearSearch::refresh(const ClothMesh& mesh, const std::vector<TriangleCorner
   excluded_.resize(n, 0);
   held_.resize(n, 0);
   sharpened_.resize(n, 0);
+  if (gated_) mature_.resize(n, 0);  // a copy made by a tear is a new vertex: it waits
   place_.resize(n, CrackPlace::None);
   version_.resize(n, 0);
   walked_.resize(n, 1);
@@ -130,6 +141,12 @@ void TearSearch::exclude(int vertex) {
   if (vertex >= 0 && vertex < static_cast<int>(excluded_.size())) excluded_[vertex] = 1;
 }
 
+void TearSearch::gateStarts(std::vector<char> mature) {
+  mature_ = std::move(mature);
+  mature_.resize(bound_.size(), 0);
+  gated_ = true;
+}
+
 void TearSearch::hold(int vertex) {
   if (vertex >= 0 && vertex < static_cast<int>(held_.size())) held_[vertex] = 1;
 }
@@ -145,16 +162,7 @@ bool TearSearch::overloadedAsStart(const ClothMesh& mesh, const std::vector<Tria
   if (vertex < 0 || vertex >= static_cast<int>(bound_.size()) || bound_[vertex] < 1.0) return false;
   if (place_[vertex] == CrackPlace::Tip) return false;
   fanOf(mesh, corners, stress, vertex, fan_);
-  const double zeta = separationStrength(fan_, hintAngle);
-  ++counts.linesEvaluated;
-  if (zeta / requiredStrength(*table_, angleFromWarpDeg(hintAngle, weftAngleRad_)) > 1.0) {
-    angle = hintAngle;
-    return true;
-  }
-  const TearCandidate best = bestLineOf(mesh, stress, vertex, place_[vertex], counts);
-  if (!(best.ratio > 1.0)) return false;
-  angle = best.angle;
-  return true;
+  return anyLineAboveOneAt(fan_, *table_, weftAngleRad_, hintAngle, angle, counts);
 }
 
 CrackPlace TearSearch::fanOf(const ClothMesh& mesh, const std::vector<TriangleCorners>& corners,
@@ -189,8 +197,8 @@ void TearSearch::boundAt(const ClothMesh& mesh, const std::vector<TriangleCorner
   }
   ++counts.vertices;
   const CrackPlace place = fanOf(mesh, corners, stress, vertex, fan_);
+  if (place != CrackPlace::None && place_[vertex] == CrackPlace::None) crackVertices_.push_back(vertex);
   place_[vertex] = place;
-  if (place != CrackPlace::None) crackVertices_.push_back(vertex);
   if (place == CrackPlace::Lip && !settings_.branchFromLips) return;  // cracks grow at their tips
   if (place == CrackPlace::Tip && settings_.tipLength > 0.0) {
     // The tip reads the material ahead of it, not its fan: no bound from the fan (tips are few).
@@ -240,12 +248,29 @@ std::optional<TearCandidate> TearSearch::best(const ClothMesh& mesh, const std::
     popEntry(waiting_);
     const int v = next.vertex;
     const CrackPlace place = fanOf(mesh, corners, stress, v, fan_);
+    if (settings_.startClearance > 0.0 && place != CrackPlace::Tip) {
+      // A start this close to a crack is refused (tear_stage.cpp); cracks only grow within a step,
+      // so it stays refused: held, not searched (it may still tear as a tip, if a crack reaches it).
+      const Triangle& t = mesh.tris[triangleAt_[v]];
+      if (nearCrack(mesh, t.rest[cornerOf(t, v)], settings_.startClearance)) {
+        held_[v] = 1;
+        continue;
+      }
+    }
+    if (gated_ && !mature_[v] && place != CrackPlace::Tip) {
+      double angle = 0.0;
+      if (anyLineAboveOneAt(fan_, *table_, weftAngleRad_, principalLineAngle(fan_), angle, counts)) {
+        newlyOverloaded_.push_back(Overloaded{v, angle});
+        held_[v] = 1;
+      }
+      continue;
+    }
     if (!unbounded && !sharpened_[v] && place != CrackPlace::Tip) {
       // Before searching the whole fan, the cheaper piecewise bound: most vertices of a loaded
       // sheet that pass the fan's bound are settled by it (they stay below 1), and the others wait
       // again behind the leader if it already beats them.
       sharpened_[v] = 1;
-      bound_[v] = std::min(bound_[v], omegaBoundAt(fan_, *table_, weftAngleRad_, 1.0, kBoundPieces, counts));
+      bound_[v] = std::min(bound_[v], omegaBoundAt(fan_, *table_, weftAngleRad_, 1.0, counts));
       if (bound_[v] < 1.0) continue;
       if (bound_[v] < leading) {
         pushEntry(waiting_, Entry{bound_[v], v, version_[v]});

@@ -57,6 +57,16 @@ class TearSearch {
   // The vertex is not offered as a crack start this step (it is still incubating); it is offered
   // again if a crack reaches it, as that crack's tip.
   void hold(int vertex);
+  // Incubation (tear_stage.h): from now on, a vertex not listed as mature (`mature[v]` != 0) is
+  // not offered as a crack start; when the search reaches it, it only asks whether the vertex is
+  // overloaded (far cheaper than its best line), holds it, and lists it in newlyOverloaded().
+  // Without a call, every vertex may start a crack.
+  void gateStarts(std::vector<char> mature);
+  struct Overloaded {
+    int vertex;
+    double angle;  // a line with omega > 1 (rad, material space)
+  };
+  const std::vector<Overloaded>& newlyOverloaded() const { return newlyOverloaded_; }
   // Whether some line at the vertex, as a crack start (not a tip), has omega > 1. The line at
   // `hintAngle` (last step's best) is tried first: a vertex whose load barely moved is settled by
   // one line instead of its whole fan. `angle` gets a line with omega > 1 when there is one.
@@ -90,6 +100,9 @@ class TearSearch {
   std::vector<char> evaluated_;
   std::vector<char> excluded_;
   std::vector<char> held_;
+  std::vector<char> mature_;             // per vertex, with gated starts: may start a crack now
+  bool gated_ = false;
+  std::vector<Overloaded> newlyOverloaded_;
   std::vector<char> sharpened_;          // per vertex: bound_ is already the piecewise bound
   std::vector<CrackPlace> place_;        // per vertex, as last looked at
   std::vector<int> crackVertices_;       // every vertex once seen on a crack (place_ says if it still is)

@@ -94,6 +94,8 @@ TearStage::TearStage(const Scene& scene) : spec_(scene.tearing) {
   searchSettings_.tipLength = spec_.propagate && spec_.stressLength == 0.0 ? spec_.crackTipLength : 0.0;
   // The largest kink of the maximum hoop stress criterion (Erdogan & Sih 1963), as crack_tip_stress.h.
   if (spec_.propagate) searchSettings_.maxKinkRad = 70.5 * std::numbers::pi / 180.0;
+  const double tipReach = spec_.stressLength > 0.0 ? spec_.stressLength : searchSettings_.tipLength;
+  if (spec_.propagate && tipReach > 0.0) searchSettings_.startClearance = 2.0 * tipReach;
   relaxation_.rings = spec_.relaxRings;
   relaxation_.sweeps = spec_.relaxSweeps;
   materialsChanged(scene);
@@ -167,7 +169,14 @@ TopologyChange TearStage::tearCloth(Cloth& cloth, int clothIndex, double time, d
   {
     StageTimer timer(profile, "tear_search");
     search_.start(cloth.mesh, corners, stress_, table, cloth.weftAngleRad, searchSettings_, stats_.search);
-    if (spec_.incubation > 0.0) holdIncubating(cloth, corners, overloadedBefore, time, dt, overloadedNow);
+    if (spec_.incubation > 0.0 && !incubated(Incubating{time - dt, 0.0}, time, dt)) {
+      // Only vertices that have waited long enough are offered as crack starts; the others are
+      // asked only whether they are (still) overloaded.
+      std::vector<char> mature(cloth.mesh.x.size(), 0);
+      for (const auto& [vertex, incubating] : overloadedBefore) mature[vertex] = incubated(incubating, time, dt);
+      search_.gateStarts(std::move(mature));
+      holdIncubating(cloth, corners, overloadedBefore, time, dt, overloadedNow);
+    }
   }
   // A crack tip runs at most this far per step (m); without propagation the stage stops after
   // maxTearsPerStep tears instead.
@@ -328,6 +337,10 @@ TopologyChange TearStage::tearCloth(Cloth& cloth, int clothIndex, double time, d
   // A vertex not offered this step dropped below omega = 1, unless the step stopped before offering
   // everything above 1 (its tear budget ran out): then the vertices of the last step keep waiting.
   if (spec_.incubation > 0.0) {
+    // The vertices whose omega went above 1 this step start their clocks.
+    for (const TearSearch::Overloaded& found : search_.newlyOverloaded()) {
+      overloadedNow.try_emplace(found.vertex, Incubating{time - dt, found.angle});
+    }
     if (tears >= maxTears) overloadedNow.insert(overloadedBefore.begin(), overloadedBefore.end());
     overloadedSince_[clothIndex] = std::move(overloadedNow);
   }
