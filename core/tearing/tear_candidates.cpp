@@ -149,7 +149,9 @@ double omegaBoundAt(const StressFan& fan, const TearTable& table, double weftAng
 
 bool anyLineAboveOneAt(const StressFan& fan, const TearTable& table, double weftAngleRad, double hintAngle,
                        double& angle, TearSearchCounts& counts) {
-  if (std::isfinite(hintAngle)) {
+  // A ray must lie inside its open fan (separationStrength's precondition).
+  const double intoFan = fan.closed ? 0.0 : std::remainder(hintAngle - fan.openStart - 0.5 * fan.openSpan, 2.0 * std::numbers::pi);
+  if (std::isfinite(hintAngle) && std::abs(intoFan) < 0.5 * fan.openSpan) {
     ++counts.linesEvaluated;
     if (separationStrength(fan, hintAngle) / requiredStrength(table, angleFromWarpDeg(hintAngle, weftAngleRad)) > 1.0) {
       angle = hintAngle;
@@ -224,11 +226,13 @@ std::vector<TearCandidate> linesAboveOneAt(const StressFan& fan, const TearTable
 }
 
 double angleFromWarpDeg(double angle, double weftAngleRad) {
-  const Vec2 C(std::cos(angle), std::sin(angle));
-  const Vec2 V(-std::sin(weftAngleRad), std::cos(weftAngleRad));  // U turned by +90 degrees
-  const double determinant = C.x() * V.y() - V.x() * C.y();         // Eq. 3.1
-  const double alpha = std::atan2(determinant, C.dot(V)) * kRadToDeg;  // Eq. 3.2
-  return std::fmod(alpha + 360.0, 180.0);                            // Eq. 3.3
+  // Eq. 3.1-3.2 take the signed angle from the line's direction C to V = U turned by +90 degrees:
+  // det(C, V) = cos(theta - w) and C . V = sin(theta - w), so alpha = w + 90 degrees - theta, which
+  // Eq. 3.3 brings into [0, 180). In closed form: no trigonometry per line (the search's inner loop).
+  double alpha = std::fmod((weftAngleRad - angle) * kRadToDeg + 90.0, 180.0);
+  if (alpha < 0.0) alpha += 180.0;
+  // A line at exactly 0 may round to just below 180, which is the same line: report 0.
+  return alpha < 180.0 - 1e-9 ? alpha : 0.0;
 }
 
 void findTearCandidates(const ClothMesh& mesh, const std::vector<TriangleCorners>& corners,

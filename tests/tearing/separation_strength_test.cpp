@@ -6,6 +6,8 @@
 #include <numbers>
 #include <random>
 
+#include "support/random_fan.h"
+
 #include <Eigen/Eigenvalues>
 
 #include "tearing/tensile_stress.h"
@@ -123,6 +125,36 @@ TEST(SeparationStrength, TheBoundIsNeverExceeded) {
       const double line = closed ? kPi * k / 100.0 : fan.openStart + total * k / 100.0;
       EXPECT_LE(separationStrength(fan, line), bound * (1.0 + 1e-12)) << "trial " << trial;
     }
+  }
+}
+
+TEST(SeparationStrength, TheBoundNearALineHoldsForEveryLineWithinItsDrift) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (int trial = 0; trial < 300; ++trial) {
+    const StressFan fan = test::randomFan(rng, trial % 2 == 0);
+    const double halfWidth = 0.001 + 0.3 * unit(rng);
+    // The piece's middle, far enough inside an open fan that the whole piece is.
+    const double middle = fan.closed ? kPi * unit(rng)
+                                     : fan.openStart + halfWidth + (fan.openSpan - 2.0 * halfWidth) * unit(rng);
+    if (!fan.closed && fan.openSpan < 2.0 * halfWidth) continue;
+    const double bound = separationBoundNear(fan, lineSides(fan, middle), sideForceRate(fan) * halfWidth);
+    for (int k = 0; k <= 40; ++k) {
+      const double line = middle - halfWidth + 2.0 * halfWidth * k / 40.0;
+      EXPECT_LE(separationStrength(fan, line), bound) << "trial " << trial << ", line " << k;
+    }
+  }
+}
+
+TEST(SeparationStrength, TheBoundNearALineTendsToItsSeparation) {
+  std::mt19937 rng(12);
+  for (int trial = 0; trial < 100; ++trial) {
+    const StressFan fan = test::randomFan(rng, trial % 2 == 0);
+    const double line = fan.closed ? 1.0 : fan.openStart + 0.5 * fan.openSpan;
+    const LineSides sides = lineSides(fan, line);
+    EXPECT_NEAR(separationBoundNear(fan, sides, 0.0), separationStrength(fan, line),
+                1e-8 * (1.0 + separationStrength(fan, line)));
+    EXPECT_NEAR(separationFromSides(fan, sides), separationStrength(fan, line), 1e-12);
   }
 }
 

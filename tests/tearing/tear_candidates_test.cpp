@@ -4,9 +4,11 @@
 
 #include <cmath>
 #include <numbers>
+#include <random>
 
 #include "mesh/grid.h"
 #include "support/collision_meshes.h"
+#include "support/random_fan.h"
 #include "tearing/tear_selection.h"
 
 namespace weft {
@@ -168,6 +170,59 @@ TEST(TearSelection, SeveralTearsPerStepKeepTheirSpacingAndNothingBelowOneTears) 
   EXPECT_EQ(chosen[0].vertex, 12);
   EXPECT_EQ(chosen[1].vertex, 50);
   EXPECT_EQ(chosen[2].vertex, 88);
+}
+
+// A table weak only at 30 degrees from V, on a cloth whose weft is turned by `weft`.
+TearTable weakAtThirtyDegrees() {
+  TearTable table;
+  table.strength.assign(12, 300.0);
+  table.strength[2] = 60.0;
+  return table;
+}
+
+TEST(TearCandidates, TheFansOmegaBoundIsNeverBelowItsBestLine) {
+  std::mt19937 rng(21);
+  const TearTable table = weakAtThirtyDegrees();
+  TearSearchSettings dense;
+  dense.lines = CandidateLines::Dense;
+  for (int trial = 0; trial < 200; ++trial) {
+    const StressFan fan = test::randomFan(rng, trial % 2 == 0);
+    const double weft = 0.1 * trial;
+    TearSearchCounts counts;
+    const double best = bestLineAt(fan, table, weft, dense, 1.0, counts).ratio;
+    EXPECT_GE(omegaBoundAt(fan, table, weft, 1.0, counts), best) << "trial " << trial;
+  }
+}
+
+TEST(TearCandidates, AnyLineAboveOneAgreesWithTheBestLine) {
+  // The overload check of the incubation against the full search: the same answer wherever the
+  // best line is not within the dense sampling's resolution of 1, and a line it finds is above 1.
+  std::mt19937 rng(22);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const TearTable table = weakAtThirtyDegrees();
+  TearSearchSettings dense;
+  dense.lines = CandidateLines::Dense;
+  int above = 0, below = 0;
+  for (int trial = 0; trial < 400; ++trial) {
+    StressFan fan = test::randomFan(rng, trial % 2 == 0);
+    const double weft = 0.1 * trial;
+    TearSearchCounts counts;
+    // Scaled so that the best line's omega lies between 0.8 and 1.2.
+    const double scale = (0.8 + 0.4 * unit(rng)) / bestLineAt(fan, table, weft, dense, 1.0, counts).ratio;
+    if (!std::isfinite(scale)) continue;
+    for (FanSector& sector : fan.sectors) sector.stress *= scale;
+    const double best = bestLineAt(fan, table, weft, dense, 1.0, counts).ratio;
+    double angle = 0.0;
+    const bool found = anyLineAboveOneAt(fan, table, weft, 0.0, angle, counts);
+    if (found) {
+      EXPECT_GT(separationStrength(fan, angle) / requiredStrength(table, angleFromWarpDeg(angle, weft)), 1.0);
+    }
+    if (std::abs(best - 1.0) < 1e-3) continue;
+    EXPECT_EQ(found, best > 1.0) << "trial " << trial << ": best line's omega " << best;
+    (best > 1.0 ? above : below)++;
+  }
+  EXPECT_GT(above, 100);
+  EXPECT_GT(below, 100);
 }
 
 }  // namespace
