@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 namespace weft {
@@ -176,6 +177,63 @@ double separationStrengthBound(const StressFan& fan) {
   const double byMean = fan.closed ? spectralNorm(mean) + 0.25 * deviation
                                    : 2.0 * std::sin(0.25 * fan.openSpan) * spectralNorm(mean) + 0.5 * deviation;
   return std::min(byArcs, byMean);
+}
+
+namespace {
+
+// The largest |x + M (g(middle + Delta) - g(middle))| over |Delta| <= halfWidth (see the header).
+double largestAlongPiece(const Vec2& x, const Mat2& m, double middle, double halfWidth) {
+  const Vec2 r(std::cos(middle), std::sin(middle));
+  const Vec2 g(r.y(), -r.x());
+  const Vec2 turn = std::sin(halfWidth) * (m * r);
+  return std::max((x + turn).norm(), (x - turn).norm()) + (1.0 - std::cos(halfWidth)) * (m * g).norm();
+}
+
+// The sector holding the direction `angle`, or -1 (a gap left by rounding).
+int sectorAt(const StressFan& fan, double angle) {
+  for (std::size_t k = 0; k < fan.sectors.size(); ++k) {
+    const FanSector& sector = fan.sectors[k];
+    if (wrapFrom(angle, sector.start) - sector.start < sector.span) return static_cast<int>(k);
+  }
+  return -1;
+}
+
+}  // namespace
+
+LinePieceBound separationOverPiece(const StressFan& fan, double middle, double halfWidth) {
+  LinePieceBound piece;
+  const LineSides sides = lineSides(fan, middle);
+  piece.zeta = separationFromSides(fan, sides);
+  piece.bound = separationBoundNear(fan, sides, sideForceRate(fan) * halfWidth);
+  piece.edge = std::numeric_limits<double>::quiet_NaN();
+  // A sector edge inside the piece: for a line, an edge at either end of it (so modulo pi).
+  const double period = fan.closed ? std::numbers::pi : kTwoPi;
+  for (const FanSector& sector : fan.sectors) {
+    const double offset = std::remainder(sector.start - middle, period);
+    if (std::abs(offset) < halfWidth * (1.0 - 1e-12)) {
+      piece.edge = middle + offset;
+      return piece;
+    }
+  }
+  const int at = sectorAt(fan, middle);
+  const int across = fan.closed ? sectorAt(fan, middle + std::numbers::pi) : at;
+  if (at < 0 || across < 0) return piece;
+  double a = 0.0, b = 0.0;  // the largest |q1| and |q2| over the piece
+  if (fan.closed) {
+    // q1' = -(sigma(theta) + sigma(theta + pi)) r(theta), and q2 = total - q1 turns the other way.
+    const Mat2 m = -(fan.sectors[at].stress + fan.sectors[across].stress);
+    a = largestAlongPiece(sides.q1, m, middle, halfWidth);
+    b = largestAlongPiece(sides.q2, -m, middle, halfWidth);
+  } else {
+    // A ray: q1' = sigma(theta) r(theta), q2' = -q1'.
+    const Mat2 m = fan.sectors[at].stress;
+    a = largestAlongPiece(sides.q1, m, middle, halfWidth);
+    b = largestAlongPiece(sides.q2, -m, middle, halfWidth);
+  }
+  // zeta <= min(|q1|, |q2|) (halved at an interior vertex); the margin covers rounding.
+  const double explicitBound = (fan.closed ? 0.5 : 1.0) * std::min(a, b) * (1.0 + 1e-9);
+  piece.bound = std::min(piece.bound, explicitBound);
+  return piece;
 }
 
 }  // namespace weft

@@ -95,4 +95,20 @@ double sideForceRate(const StressFan& fan);
 // by at most asin(drift / |side|). Tends to zeta itself as drift shrinks.
 double separationBoundNear(const StressFan& fan, const LineSides& sides, double drift);
 
+// zeta of the line at `middle`, and a bound of zeta over the lines within `halfWidth` of it
+// (halfWidth <= pi / 4; for an open fan the piece must lie inside the fan).
+// Where no sector edge lies inside the piece, each side's force is an explicit function of the
+// line's angle: with Delta the turn from the middle, q(Delta) = q(0) + M (g(middle + Delta) -
+// g(middle)), M a fixed sum of the sectors' stresses, and g(middle + Delta) - g(middle) =
+// sin(Delta) r + (cos(Delta) - 1) g. Its length is convex in sin(Delta), so it is largest at the
+// piece's ends but for the (1 - cos) term: a bound of second order in the piece's width, which
+// settles the lines around a load's peak in a few pieces where the drift bound needs many.
+// Otherwise `edge` is the sector edge inside (split there) and the bound is the drift's.
+struct LinePieceBound {
+  double zeta = 0.0;   // of the middle line
+  double bound = 0.0;  // over the piece
+  double edge = 0.0;   // a sector edge inside the piece (rad), NaN when there is none
+};
+LinePieceBound separationOverPiece(const StressFan& fan, double middle, double halfWidth);
+
 }  // namespace weft

@@ -105,19 +105,20 @@ struct LinePiece {
   double angle = 0.0;  // rad, material space
   double halfWidth = 0.0;
   double omega = 0.0;  // of the line at `angle` itself
+  double edge = 0.0;   // a sector edge inside the piece (rad), NaN when there is none: split there
 };
 
-LinePiece boundPiece(const StressFan& fan, const TearTable& table, double weftAngleRad, double scale, double rate,
+LinePiece boundPiece(const StressFan& fan, const TearTable& table, double weftAngleRad, double scale,
                      double angle, double halfWidth) {
   LinePiece piece;
   piece.angle = angle;
   piece.halfWidth = halfWidth;
-  const LineSides sides = lineSides(fan, angle);
+  const LinePieceBound lines = separationOverPiece(fan, angle, halfWidth);
   const double alpha = angleFromWarpDeg(angle, weftAngleRad);
-  piece.omega = separationFromSides(fan, sides) / (scale * requiredStrength(table, alpha));
+  piece.omega = lines.zeta / (scale * requiredStrength(table, alpha));
   const double halfWidthDeg = halfWidth * kRadToDeg;
-  piece.bound = separationBoundNear(fan, sides, rate * halfWidth) /
-                (scale * weakestStrengthBetween(table, alpha - halfWidthDeg, alpha + halfWidthDeg));
+  piece.bound = lines.bound / (scale * weakestStrengthBetween(table, alpha - halfWidthDeg, alpha + halfWidthDeg));
+  piece.edge = lines.edge;
   return piece;
 }
 
@@ -138,11 +139,10 @@ void forEachFirstPiece(const StressFan& fan, const Visit& visit) {
 
 double omegaBoundAt(const StressFan& fan, const TearTable& table, double weftAngleRad, double strengthScale,
                     TearSearchCounts& counts) {
-  const double rate = sideForceRate(fan);
   double bound = 0.0;
   forEachFirstPiece(fan, [&](double angle, double halfWidth) {
     ++counts.linesEvaluated;
-    bound = std::max(bound, boundPiece(fan, table, weftAngleRad, strengthScale, rate, angle, halfWidth).bound);
+    bound = std::max(bound, boundPiece(fan, table, weftAngleRad, strengthScale, angle, halfWidth).bound);
   });
   return bound;
 }
@@ -164,14 +164,13 @@ bool anyLineAboveOneAt(const StressFan& fan, const TearTable& table, double weft
   // as not above 1, as is a fan still undecided after kMostPieces pieces.
   constexpr double kNarrowest = 1e-5;  // rad
   constexpr int kMostPieces = 600;
-  const double rate = sideForceRate(fan);
   std::vector<LinePiece> open;
   auto order = [](const LinePiece& a, const LinePiece& b) { return a.bound < b.bound; };
   bool found = false;
   auto consider = [&](double at, double halfWidth) {
     if (found) return;
     ++counts.linesEvaluated;
-    const LinePiece piece = boundPiece(fan, table, weftAngleRad, 1.0, rate, at, halfWidth);
+    const LinePiece piece = boundPiece(fan, table, weftAngleRad, 1.0, at, halfWidth);
     if (piece.omega > 1.0) {
       angle = at;
       found = true;
@@ -185,9 +184,12 @@ bool anyLineAboveOneAt(const StressFan& fan, const TearTable& table, double weft
     std::pop_heap(open.begin(), open.end(), order);
     const LinePiece widest = open.back();
     open.pop_back();
-    const double half = 0.5 * widest.halfWidth;
-    consider(widest.angle - half, half);
-    consider(widest.angle + half, half);
+    // Split at the sector edge inside, if any (both halves then have the explicit bound), else
+    // in the middle.
+    const double lo = widest.angle - widest.halfWidth, hi = widest.angle + widest.halfWidth;
+    const double cut = std::isfinite(widest.edge) ? widest.edge : widest.angle;
+    consider(0.5 * (lo + cut), 0.5 * (cut - lo));
+    consider(0.5 * (cut + hi), 0.5 * (hi - cut));
   }
   return found;
 }

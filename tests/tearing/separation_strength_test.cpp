@@ -146,6 +146,51 @@ TEST(SeparationStrength, TheBoundNearALineHoldsForEveryLineWithinItsDrift) {
   }
 }
 
+TEST(SeparationStrength, ThePiecesBoundHoldsForEveryLineOfThePiece) {
+  std::mt19937 rng(13);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  int explicitPieces = 0;
+  for (int trial = 0; trial < 600; ++trial) {
+    const StressFan fan = test::randomFan(rng, trial % 2 == 0);
+    const double halfWidth = 0.0005 + 0.3 * unit(rng) * unit(rng);
+    if (!fan.closed && fan.openSpan < 2.0 * halfWidth) continue;
+    const double middle = fan.closed ? kPi * unit(rng)
+                                     : fan.openStart + halfWidth + (fan.openSpan - 2.0 * halfWidth) * unit(rng);
+    const LinePieceBound piece = separationOverPiece(fan, middle, halfWidth);
+    EXPECT_NEAR(piece.zeta, separationStrength(fan, middle), 1e-12 * (1.0 + piece.zeta));
+    if (!std::isfinite(piece.edge)) ++explicitPieces;
+    for (int k = 0; k <= 40; ++k) {
+      const double line = middle - halfWidth + 2.0 * halfWidth * k / 40.0;
+      EXPECT_LE(separationStrength(fan, line), piece.bound) << "trial " << trial << ", line " << k;
+    }
+  }
+  EXPECT_GT(explicitPieces, 200);
+}
+
+TEST(SeparationStrength, UnderAUniformLoadThePiecesBoundIsOfSecondOrderInItsWidth) {
+  // Uneven sectors, one stress: zeta peaks across the pull, where the bound must not exceed the
+  // piece's largest zeta by more than a multiple of the width squared (a drift bound exceeds it by
+  // sigma times the width).
+  std::mt19937 rng(14);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (int trial = 0; trial < 100; ++trial) {
+    StressFan fan = test::randomFan(rng, true);
+    const double pull = 2.0 * kPi * unit(rng);
+    const Mat2 sigma = uniaxial(100.0, pull);
+    for (FanSector& sector : fan.sectors) sector.stress = sigma;
+    for (const double halfWidth : {0.04, 0.02, 0.01}) {
+      const double middle = pull + 0.5 * kPi + halfWidth * (unit(rng) - 0.5);  // across the pull
+      const LinePieceBound piece = separationOverPiece(fan, middle, halfWidth);
+      if (std::isfinite(piece.edge)) continue;
+      double largest = 0.0;
+      for (int k = 0; k <= 40; ++k) {
+        largest = std::max(largest, separationStrength(fan, middle - halfWidth + 2.0 * halfWidth * k / 40.0));
+      }
+      EXPECT_LE(piece.bound - largest, 100.0 * halfWidth * halfWidth) << "trial " << trial << ", half width " << halfWidth;
+    }
+  }
+}
+
 TEST(SeparationStrength, TheBoundNearALineTendsToItsSeparation) {
   std::mt19937 rng(12);
   for (int trial = 0; trial < 100; ++trial) {
