@@ -101,25 +101,10 @@ TEST(SeparationStrength, StressTurnsWithTheWeftAngle) {
 
 TEST(SeparationStrength, TheBoundIsNeverExceeded) {
   std::mt19937 rng(5);
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
   for (int trial = 0; trial < 200; ++trial) {
-    // A random closed or open fan of random tensile stresses and uneven sectors.
-    const int n = 3 + static_cast<int>(unit(rng) * 6);
     const bool closed = trial % 2 == 0;
-    const double total = closed ? 2.0 * kPi : kPi * (0.3 + 1.5 * unit(rng));
-    std::vector<double> weights(n);
-    double sum = 0.0;
-    for (double& w : weights) sum += (w = 0.2 + unit(rng));
-    StressFan fan;
-    fan.closed = closed;
-    fan.openStart = 2.0 * kPi * unit(rng);
-    fan.openSpan = total;
-    double angle = fan.openStart;
-    for (int k = 0; k < n; ++k) {
-      Mat2 a = Mat2::Random() * 200.0;
-      fan.sectors.push_back(makeSector(angle, total * weights[k] / sum, tensilePart(a + a.transpose())));
-      angle += fan.sectors.back().span;
-    }
+    const StressFan fan = test::randomFan(rng, closed);
+    const double total = fan.openSpan;
     const double bound = separationStrengthBound(fan);
     for (int k = 1; k < 100; ++k) {
       const double line = closed ? kPi * k / 100.0 : fan.openStart + total * k / 100.0;
