@@ -152,7 +152,9 @@ TopologyChange TearStage::tearCloth(Cloth& cloth, int clothIndex, double time, d
   if (overshoot_.size() != corners_.size()) overshoot_.resize(corners_.size());
   if (overloadedSince_.size() != corners_.size()) overloadedSince_.resize(corners_.size());
   const std::unordered_map<int, Incubating>& overloadedBefore = overloadedSince_[clothIndex];
-  std::unordered_map<int, Incubating> overloadedNow;  // the vertices offered as crack starts this step
+  // The vertices overloaded this step: held while incubating, offered once mature, or found newly
+  // above 1.
+  std::unordered_map<int, Incubating> overloadedNow;
   {
     StageTimer timer(profile, "tear_stress");
     tensileStresses(cloth, localStress_);
