@@ -206,7 +206,8 @@ Material loadMaterialFile(const std::filesystem::path& file) {
 }
 
 Material loadMaterialPreset(const std::string& name, const std::vector<std::filesystem::path>& presetDirs,
-                            const std::string& referencingFile, const std::string& referencingField) {
+                            const std::string& referencingFile, const std::string& referencingField,
+                            std::filesystem::path* found) {
   const std::vector<std::string> available = availablePresets(presetDirs);
   const bool plainName = !name.empty() && name.find_first_of("/\\") == std::string::npos && name != "." && name != "..";
   if (plainName) {
@@ -219,6 +220,7 @@ Material loadMaterialPreset(const std::string& name, const std::vector<std::file
         throw InputError(file.string(), "/name",
                          "is '" + echo(m.name) + "' but the preset is looked up as '" + echo(name) + "'; they must match");
       }
+      if (found != nullptr) *found = file;
       return m;
     }
   }

@@ -43,9 +43,11 @@ struct Material {
 Material parseMaterial(const nlohmann::json& j, const std::string& file, const std::string& path);
 nlohmann::json materialToJson(const Material& m);
 
-// Loads presets/materials/<name>.json, searching `presetDirs` in order. Throws InputError.
+// Loads presets/materials/<name>.json, searching `presetDirs` in order; `found`, when given, is
+// set to the file read. Throws InputError.
 Material loadMaterialPreset(const std::string& name, const std::vector<std::filesystem::path>& presetDirs,
-                            const std::string& referencingFile, const std::string& referencingField);
+                            const std::string& referencingFile, const std::string& referencingField,
+                            std::filesystem::path* found = nullptr);
 Material loadMaterialFile(const std::filesystem::path& file);
 
 }  // namespace weft

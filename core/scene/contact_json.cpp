@@ -80,7 +80,10 @@ ShapeSpec parseShape(const json& j, const std::string& pointer, const SceneReadC
       fs::path beside = shape.meshPath;
       beside.replace_extension(".sharp.json");
       std::error_code error;  // a name too long for the file system has no tags beside it
-      if (fs::is_regular_file(beside, error)) shape.sharpTagsPath = beside;
+      if (fs::is_regular_file(beside, error)) {
+        shape.sharpTagsPath = beside;
+        ctx.read(beside);
+      }
     }
   }
   return shape;

@@ -92,8 +92,10 @@ void parseMaterialField(const FieldReader& r, const SceneReadContext& ctx, Cloth
   const std::string name = value.get<std::string>();
   requirePresetNameLength(r, at, name);
   // loadMaterialPreset names the scene field and lists the available presets when `name` is unknown.
-  cloth.material = loadMaterialPreset(name, ctx.paths.materialDirs, ctx.file, at);
+  fs::path found;
+  cloth.material = loadMaterialPreset(name, ctx.paths.materialDirs, ctx.file, at, &found);
   cloth.materialName = name;
+  ctx.read(found);
 }
 
 // A cloth's own tear table replaces its material's: a preset name (presets/tear_tables/NAME.json)
@@ -106,7 +108,9 @@ void parseTearTableField(const FieldReader& r, const SceneReadContext& ctx, Clot
     cloth.material.tearTable = parseTearTable(value, ctx.file, at);
   } else if (value.is_string()) {
     requirePresetNameLength(r, at, value.get<std::string>());
-    cloth.material.tearTable = loadTearTablePreset(value.get<std::string>(), ctx.paths.tearTableDirs, ctx.file, at);
+    fs::path found;
+    cloth.material.tearTable = loadTearTablePreset(value.get<std::string>(), ctx.paths.tearTableDirs, ctx.file, at, &found);
+    ctx.read(found);
   } else {
     r.fail(at, "must be a tear table preset name or a tear table object, " + got(value));
   }
@@ -540,8 +544,10 @@ void applyOverrides(json& scene, const std::vector<std::string>& overrides, cons
   }
 }
 
-Scene parseScene(const json& j, const fs::path& file, const SearchPaths& paths) {
-  const SceneReadContext ctx{file.string(), paths};
+namespace {
+
+Scene parseSceneReading(const json& j, const fs::path& file, const SearchPaths& paths, std::vector<fs::path>* filesRead) {
+  const SceneReadContext ctx{file.string(), paths, filesRead};
   const FieldReader r(j, "", ctx.file, {"name",   "description", "cloths", "forces",   "solver",
                                               "stages", "output",      "ground", "obstacles", "contact", "tearing"});
   Scene scene;
@@ -578,6 +584,19 @@ Scene parseScene(const json& j, const fs::path& file, const SearchPaths& paths) 
                          std::to_string(limits::kMaxStepsPerFrame) + " (raise fps or dt)");
   }
   return scene;
+}
+
+}  // namespace
+
+Scene parseScene(const json& j, const fs::path& file, const SearchPaths& paths) {
+  return parseSceneReading(j, file, paths, nullptr);
+}
+
+std::vector<fs::path> sceneInputFiles(const fs::path& file) {
+  const json j = readJsonFile(file, "the scene file", JsonTextOptions{.allowComments = true});
+  std::vector<fs::path> files;
+  (void)parseSceneReading(j, file, defaultSearchPaths(file), &files);
+  return files;
 }
 
 Scene loadScene(const fs::path& file, const std::vector<std::string>& overrides) {

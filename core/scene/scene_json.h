@@ -28,5 +28,10 @@ void applyOverrides(nlohmann::json& scene, const std::vector<std::string>& overr
 // Parses and validates; resolves material presets and mesh files. Throws InputError.
 Scene parseScene(const nlohmann::json& j, const std::filesystem::path& file, const SearchPaths& paths);
 Scene loadScene(const std::filesystem::path& file, const std::vector<std::string>& overrides = {});
+// The files loading `file` reads besides itself, as the reader resolves them, in reading order:
+// material and tear table presets, OBJ meshes, sharp-tag files. For whoever keeps something made
+// from the scene (the editor's thumbnails): the scene file alone does not say when it is stale.
+// Throws InputError as loadScene does.
+std::vector<std::filesystem::path> sceneInputFiles(const std::filesystem::path& file);
 
 }  // namespace weft

@@ -62,13 +62,19 @@ fs::path resolveAsset(const std::string& relative, const FieldReader& r, const s
   // The error_code overloads: a name too long for the file system is simply not found.
   std::error_code error;
   if (given.is_absolute()) {
-    if (fs::is_regular_file(given, error)) return given;
+    if (fs::is_regular_file(given, error)) {
+      ctx.read(given);
+      return given;
+    }
     r.fail(r.pointer(key), "file not found: \"" + echo(relative) + "\"");
   }
   std::string looked;
   for (const auto& dir : ctx.paths.assetDirs) {
     const fs::path candidate = dir / given;
-    if (fs::is_regular_file(candidate, error)) return candidate.lexically_normal();
+    if (fs::is_regular_file(candidate, error)) {
+      ctx.read(candidate.lexically_normal());
+      return candidate.lexically_normal();
+    }
     looked += (looked.empty() ? "" : ", ") + dir.string();
   }
   r.fail(r.pointer(key), "file not found: \"" + echo(relative) + "\" (looked in: " + looked + ")");

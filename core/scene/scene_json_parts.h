@@ -5,6 +5,7 @@
 // pointer of the field.
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -17,6 +18,12 @@ namespace weft {
 struct SceneReadContext {
   std::string file;  // the scene file as given (messages)
   const SearchPaths& paths;
+  // When set, every preset and asset file the reader resolves is added, in reading order
+  // (sceneInputFiles).
+  std::vector<std::filesystem::path>* filesRead = nullptr;
+  void read(const std::filesystem::path& file) const {
+    if (filesRead != nullptr) filesRead->push_back(file);
+  }
 };
 
 // Points are fixed-size rows of finite numbers; the reader checks their length and finiteness.

@@ -96,7 +96,8 @@ nlohmann::json tearTableToJson(const TearTable& table) {
 }
 
 TearTable loadTearTablePreset(const std::string& name, const std::vector<std::filesystem::path>& presetDirs,
-                              const std::string& referencingFile, const std::string& referencingField) {
+                              const std::string& referencingFile, const std::string& referencingField,
+                              std::filesystem::path* found) {
   const bool plainName = !name.empty() && name.find_first_of("/\\") == std::string::npos && name != "." && name != "..";
   std::vector<std::string> available, searched;
   for (const auto& dir : presetDirs) {
@@ -112,6 +113,7 @@ TearTable loadTearTablePreset(const std::string& name, const std::vector<std::fi
         throw InputError(file.string(), "/name",
                          "is '" + table.name + "' but the preset is looked up as '" + name + "'; they must match");
       }
+      if (found != nullptr) *found = file;
       return table;
     }
     std::error_code error;

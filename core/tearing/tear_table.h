@@ -53,8 +53,10 @@ double tableDirectionDeg(const TearTable& table, int k);
 // Strict parsing: `file` and `path` name the object in error messages. Throws InputError.
 TearTable parseTearTable(const nlohmann::json& j, const std::string& file, const std::string& path);
 nlohmann::json tearTableToJson(const TearTable& table);
-// Loads presets/tear_tables/<name>.json from the first of `presetDirs` that has it.
+// Loads presets/tear_tables/<name>.json from the first of `presetDirs` that has it; `found`, when
+// given, is set to the file read.
 TearTable loadTearTablePreset(const std::string& name, const std::vector<std::filesystem::path>& presetDirs,
-                              const std::string& referencingFile, const std::string& referencingField);
+                              const std::string& referencingFile, const std::string& referencingField,
+                              std::filesystem::path* found = nullptr);
 
 }  // namespace weft

@@ -8,10 +8,16 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <fstream>
+#include <iterator>
+#include <optional>
+#include <string>
+#include <vector>
 
 #include "editor/scene_browser.h"
 #include "editor/thumbnail_cache.h"
 #include "png_reader.h"
+#include "scene/scene_json.h"
 #include "scene_renderer.h"
 #include "support/editor_panels_fixture.h"
 
@@ -50,6 +56,56 @@ TEST(ThumbnailCache, KeyFollowsTheFilesBytesAndTheFolderFollowsTheEnvironment) {
   setenv("WEFT_CACHE_DIR", dir.path().c_str(), 1);
   EXPECT_EQ(defaultThumbnailFolder(), dir.path() / "thumbnails");
   unsetenv("WEFT_CACHE_DIR");
+}
+
+// A scene that names presets looks different when a preset changes: the key covers the bytes of
+// every file the scene loads, as the reader resolves them (here the scene folder's own copies of
+// the material and the tear table, which come before the project's presets).
+TEST(ThumbnailCache, KeyFollowsTheBytesOfThePresetsTheSceneLoads) {
+  test::TempDir dir;
+  const fs::path presets = fs::path(WEFT_SOURCE_DIR) / "presets";
+  fs::create_directories(dir.path() / "materials");
+  fs::create_directories(dir.path() / "tear_tables");
+  const fs::path material = dir.path() / "materials" / "11oz-black-denim.json";
+  const fs::path table = dir.path() / "tear_tables" / "karaoz2015-table4.1-cloth2.json";
+  fs::copy_file(presets / "materials" / "11oz-black-denim.json", material);
+  fs::copy_file(presets / "tear_tables" / "karaoz2015-table4.1-cloth2.json", table);
+  fs::create_directories(dir.path() / "scenes");
+  const fs::path scene = dir.path() / "scenes" / "sheet.json";
+  fs::copy_file(presets / "scenes" / "ball-into-sheet-table4.1-cloth2.json", scene);
+
+  const std::vector<fs::path> files = sceneInputFiles(scene);
+  EXPECT_NE(std::find(files.begin(), files.end(), material.lexically_normal()), files.end());
+  EXPECT_NE(std::find(files.begin(), files.end(), table.lexically_normal()), files.end());
+  const std::optional<std::string> key = ThumbnailCache::keyOf(scene);
+  ASSERT_TRUE(key);
+  EXPECT_EQ(ThumbnailCache::keyOf(scene), key) << "nothing changed, same key";
+
+  const auto rewrite = [](const fs::path& file, const std::string& from, const std::string& to) {
+    std::ifstream in(file);
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::size_t at = text.find(from);
+    ASSERT_NE(at, std::string::npos) << from << " in " << file;
+    text.replace(at, from.size(), to);
+    std::ofstream(file, std::ios::trunc) << text;
+  };
+  const std::string materialBytes = [&] {
+    std::ifstream in(material);
+    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  }();
+  rewrite(material, "\"area_density_kg_m2\":", "\"area_density_kg_m2\":  ");  // same values, other bytes
+  const std::optional<std::string> materialChanged = ThumbnailCache::keyOf(scene);
+  EXPECT_NE(materialChanged, key) << "the material preset changed";
+  std::ofstream(material, std::ios::trunc) << materialBytes;
+  EXPECT_EQ(ThumbnailCache::keyOf(scene), key) << "back as it was, the old thumbnail is right again";
+
+  rewrite(table, "\"strength\":", "\"strength\":  ");
+  const std::optional<std::string> tableChanged = ThumbnailCache::keyOf(scene);
+  EXPECT_NE(tableChanged, key) << "the tear table preset changed";
+  EXPECT_NE(tableChanged, materialChanged);
+
+  fs::remove(material);  // the project's preset of that name is found instead
+  EXPECT_NE(ThumbnailCache::keyOf(scene), tableChanged) << "another file resolved";
 }
 
 TEST_F(SceneBrowserTest, AThumbnailIsRenderedOnceAndCachedByTheSceneFilesContent) {

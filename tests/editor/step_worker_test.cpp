@@ -3,7 +3,12 @@
 // step runs are applied between steps, and the steps taken are the ones `weft run` takes.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <deque>
+#include <memory>
+#include <optional>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -12,6 +17,7 @@
 
 #include "editor/editor_session.h"
 #include "editor/scene_edits.h"
+#include "editor/step_worker.h"
 #include "scene/scene_json.h"
 #include "sim/world.h"
 #include "support/temp_dir.h"
@@ -130,6 +136,57 @@ TEST(StepWorker, AClickPicksBetweenStepsAndHoldsTheRestUntilTheNextFrame) {
   session.advanceFrame(0.0);  // releases the worker: it takes the steps still owed
   EXPECT_GT(session.world().stepCount(), atClick);
   EXPECT_TRUE(session.world().grabState().has_value());
+}
+
+// The change log a resume replays (timeline, item 7) goes back only as far as the oldest world
+// copy still held: a long session with an edit every frame, and a timeline that keeps the last
+// few copies (as thinning and a full budget leave it), logs a few frames' edits, not the
+// session's. A resume from the oldest copy kept still replays every edit since, where it landed:
+// the world is the one that never stopped, to the bit (block Jacobi CG: World::step depends on
+// the state only).
+TEST(StepWorker, TheChangeLogGoesBackOnlyAsFarAsTheOldestWorldCopyHeld) {
+  test::TempDir dir;
+  json sheetJson = preset("ball-into-sheet-table4.1-cloth2");
+  sheetJson["cloths"][0]["mesh"]["grid"]["resolution"] = json::array({10, 10});
+  sheetJson["solver"]["linear_solver"]["preconditioner"] = "block_jacobi";
+  const Scene scene = loadScene(dir.write("scenes/sheet.json", sheetJson.dump(2)));
+  const long long frameSteps = std::max<long long>(stepsPerFrame(scene), 1);
+  StepWorker worker(std::make_unique<World>(scene));
+  std::deque<std::shared_ptr<const World>> kept{worker.copyWhenIdle()};  // the timeline's copies
+  constexpr std::size_t kKept = 3;
+  constexpr int kFrames = 30;
+  for (int frame = 1; frame <= kFrames; ++frame) {
+    worker.apply([frame](World& world) {  // an edit at the start of every frame
+      ForcesSpec forces = world.scene().forces;
+      forces.gravity = Vec3(0.3 * std::sin(frame), -9.81 + 0.5 * std::cos(frame), 0.0);
+      world.setForces(forces);
+    });
+    worker.ask(frameSteps, frameSteps);
+    worker.wait();
+    const std::optional<StepResult> result = worker.takeResult();
+    ASSERT_TRUE(result);
+    ASSERT_EQ(result->frames.size(), 1u);
+    kept.push_back(result->frames.front().world);
+    while (kept.size() > kKept) kept.pop_front();  // thinned away: nothing holds it any more
+    EXPECT_LE(worker.loggedChanges(), kKept) << "frame " << frame << ": the edits since the oldest copy held";
+  }
+  EXPECT_GE(worker.loggedChanges(), kKept - 1) << "the edits a resume from a kept copy replays are kept";
+
+  const World& live = worker.idleWorld();
+  const long long end = live.stepCount();
+  ASSERT_EQ(end, kFrames * frameSteps);
+  const std::uint64_t liveHash = live.stateHash();
+  const Vec3 liveGravity = live.scene().forces.gravity;
+  const std::shared_ptr<const World> oldest = kept.front();
+  ASSERT_LT(oldest->stepCount(), end - frameSteps) << "the resume steps over more than one logged edit";
+  worker.resumeFrom(oldest, end);
+  const World& resumed = worker.idleWorld();
+  EXPECT_EQ(resumed.stepCount(), end);
+  EXPECT_EQ(resumed.scene().forces.gravity, liveGravity) << "the last edit replayed";
+  EXPECT_EQ(resumed.stateHash(), liveHash) << "every edit since the oldest copy replayed where it landed";
+  const std::optional<StepResult> rewound = worker.takeResult();
+  ASSERT_TRUE(rewound && rewound->rewoundTo);
+  EXPECT_EQ(*rewound->rewoundTo, end);
 }
 
 }  // namespace

@@ -49,6 +49,10 @@ void InputQueue::applyTo(ImGuiIO& io) {
     if (down != e.down) {
       const bool press = e.down && (e.mouse || !isModifier(e.code));
       if (press && pressed) break;     // the second tap of this frame: the next frame's
+      // A modifier changed after this frame's press: the press keeps the modifiers it was made
+      // with. xdotool's ctrl+s (and a quick hand) releases Ctrl before S; had S gone down in the
+      // same frame as Ctrl went up, ImGui would see a plain S, and the save was lost.
+      if (pressed && !e.mouse && isModifier(e.code)) break;
       if (e.mouse && anyChange) break;  // a click starts a frame of its own
       down = e.down;
       changed = true;

@@ -8,6 +8,8 @@
 //  - at most one press a frame (of a key other than Ctrl, Shift, Alt or Super, or of a button):
 //    keys pressed in a roll (the next one down before the last one is up) still reach ImGui one
 //    after the other, not as one chord;
+//  - no modifier changes after the frame's press: a key pressed with Ctrl held is seen with Ctrl
+//    down, even when Ctrl is released before the key (Ctrl up, then S up) within the same frame;
 //  - a mouse button's change has a frame to itself: the widget under it changes state (a field
 //    takes the keyboard) before a character or key typed after the click arrives;
 //  - characters arrive in order with the keys and clicks (the window hands them over,

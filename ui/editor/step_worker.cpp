@@ -35,6 +35,7 @@ void StepWorker::attach(std::unique_ptr<World> world) {
   std::unique_ptr<World> old = std::exchange(world_, std::move(world));
   frameSteps_ = std::max<long long>(stepsPerFrame(world_->scene()), 1);
   changeLog_.clear();
+  copies_.clear();
   queued_.clear();
   result_ = StepResult{};
   snapshot_ = snapshotOf(*world_);
@@ -56,13 +57,41 @@ void StepWorker::resumeFrom(std::shared_ptr<const World> frameWorld, long long s
   wake_.notify_all();
 }
 
-std::shared_ptr<const World> StepWorker::copyWhenIdle() { return idleWorld().clone(); }
+std::shared_ptr<const World> StepWorker::copyWhenIdle() {
+  std::shared_ptr<const World> copy = idleWorld().clone();
+  std::lock_guard lock(mutex_);
+  handedOut(copy);
+  return copy;
+}
 
 void StepWorker::applyLogged(std::function<void(World&)> change) {
   change(*world_);
   changeLog_.emplace_back(world_->stepCount(), std::move(change));
   snapshotStale_ = true;
   rebaseHealth_ = true;
+  forgetUnreplayable();
+}
+
+void StepWorker::handedOut(const std::shared_ptr<const World>& copy) {
+  copies_.emplace_back(copy->stepCount(), copy);
+  forgetUnreplayable();
+}
+
+// A resume replays the changes logged at or after its copy's step (resume()), and starts only from
+// a copy handed out and still held; with none held, any later copy is taken at a later step than
+// the world's now. Copies gone are forgotten here too, so the watch list stays as long as the
+// timeline's.
+void StepWorker::forgetUnreplayable() {
+  if (running_) return;  // the world is stepping (or a resume holds the log): next time
+  std::erase_if(copies_, [](const auto& copy) { return copy.second.expired(); });
+  long long oldest = world_->stepCount();
+  for (const auto& [step, copy] : copies_) oldest = std::min(oldest, step);
+  std::erase_if(changeLog_, [&](const auto& change) { return change.first < oldest; });
+}
+
+std::size_t StepWorker::loggedChanges() const {
+  std::lock_guard lock(mutex_);
+  return changeLog_.size();
 }
 
 void StepWorker::ask(long long steps, long long maxOwed) {
@@ -188,7 +217,10 @@ void StepWorker::run() {
     running_ = false;
     snapshot_ = std::move(next);
     result_.stepMs.push_back(1000.0 * seconds);
-    if (frameEnds) result_.frames.push_back({world.stepCount() / frameSteps_, snapshot_, std::move(frameWorld)});
+    if (frameEnds) {
+      handedOut(frameWorld);
+      result_.frames.push_back({world.stepCount() / frameSteps_, snapshot_, std::move(frameWorld)});
+    }
     if (unhealthy) result_.unhealthy = std::move(unhealthy);
     --owed_;
     if (!finite) {

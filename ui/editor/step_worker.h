@@ -21,6 +21,12 @@
 // nearest earlier copy is stepped forward to the frame, every change applied since replayed
 // where it landed (each change is logged with the step it landed after; World::step is
 // deterministic), so the world is the frame's exactly; never from t = 0 unless that is nearest.
+// The log is kept from the oldest world copy still held anywhere on (the timeline's, a resume's):
+// a resume starts from such a copy and replays only what landed at or after its step, so what
+// landed before the oldest one can never be replayed again and is dropped. The timeline drops
+// copies as it thins them and frames as it runs out of room, so a long session's log stays as
+// long as the stretch its kept copies cover (with frame 0's copy kept, the whole session: what
+// bounds it then is the budget dropping frame 0).
 //
 // Determinism: the worker runs World::step exactly as `weft run` does, one after another; only
 // when an edit lands (between which two steps) depends on timing, as it does for any user.
@@ -70,9 +76,10 @@ class StepWorker {
   // uncollected result.
   void attach(std::unique_ptr<World> world);
 
-  // Replaces the world by a copy of `frameWorld` (a cached frame's, see above) stepped forward to
-  // `step` (none: as it is), on the worker, and returns at once; owed steps are dropped, changes
-  // applied after the call land on the result.
+  // Replaces the world by a copy of `frameWorld` (a cached frame's, see above: a copy this worker
+  // handed out, since the log is kept only as far back as those go) stepped forward to `step`
+  // (none: as it is), on the worker, and returns at once; owed steps are dropped, changes applied
+  // after the call land on the result.
   void resumeFrom(std::shared_ptr<const World> frameWorld, long long step);
   // A copy of the world as it is now, once the owed steps are taken (frame 0 of the timeline).
   std::shared_ptr<const World> copyWhenIdle();
@@ -103,6 +110,9 @@ class StepWorker {
   // What the world looked like after the latest step or change.
   std::shared_ptr<const WorldSnapshot> snapshot();
 
+  // Changes kept for a resume to replay (see above): bounded by the oldest world copy held.
+  std::size_t loggedChanges() const;
+
  private:
   void run();
   void applyQueued(std::unique_lock<std::mutex>& lock);
@@ -110,6 +120,8 @@ class StepWorker {
   bool idle() const { return !running_ && !resumeFrom_ && owed_ == 0; }                    // under mutex_
   void applyLogged(std::function<void(World&)> change);  // under mutex_, the world not stepping
   void resume(std::unique_lock<std::mutex>& lock);
+  void handedOut(const std::shared_ptr<const World>& copy);  // under mutex_
+  void forgetUnreplayable();                                 // under mutex_
 
   mutable std::mutex mutex_;
   std::condition_variable wake_;  // steps owed, or quit
@@ -119,6 +131,9 @@ class StepWorker {
   std::shared_ptr<const World> resumeFrom_;  // asked for, not yet done
   long long resumeStep_ = 0;                 // ... stepped forward to this step
   std::vector<std::pair<long long, std::function<void(World&)>>> changeLog_;  // step landed after, change
+  // Every world copy handed out (frames, copyWhenIdle) and the step it was taken at; watched, not
+  // owned: the timeline decides how long a copy lives, and with it how far back the log goes.
+  std::vector<std::pair<long long, std::weak_ptr<const World>>> copies_;
   long long owed_ = 0;  // steps asked for and not yet taken (the one running included)
   StepResult result_;
   std::vector<std::function<void(World&)>> queued_;

@@ -7,6 +7,9 @@
 #include <fstream>
 #include <sstream>
 
+#include "scene/scene_json.h"
+#include "util/input_error.h"
+
 namespace weft::editor {
 
 namespace fs = std::filesystem;
@@ -26,13 +29,39 @@ std::string fnv1aHex(const std::string& text) {
   return hex;
 }
 
-std::optional<std::string> ThumbnailCache::keyOf(const fs::path& sceneFile) {
-  std::ifstream in(sceneFile, std::ios::binary);
+namespace {
+
+std::optional<std::string> bytesOf(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
   if (!in) return std::nullopt;
   std::ostringstream bytes;
   bytes << in.rdbuf();
   if (in.bad()) return std::nullopt;
-  return fnv1aHex(std::string(kThumbnailStyle) + '\n' + bytes.str());
+  return bytes.str();
+}
+
+}  // namespace
+
+// The files the scene loads come from the scene reader itself (sceneInputFiles), not from a hash
+// of the parsed Scene: a Scene holds a mesh's path, not its triangles, and a hash of every field
+// would go stale the day a field is added. Each file is named (a preset found in another folder
+// is another preset) and its bytes follow, with their length, so no two lists run together.
+std::optional<std::string> ThumbnailCache::keyOf(const fs::path& sceneFile) {
+  const std::optional<std::string> scene = bytesOf(sceneFile);
+  if (!scene) return std::nullopt;
+  std::string keyed = std::string(kThumbnailStyle) + '\n' + std::to_string(scene->size()) + '\n' + *scene;
+  try {
+    for (const fs::path& file : sceneInputFiles(sceneFile)) {
+      const std::optional<std::string> bytes = bytesOf(file);
+      keyed += '\n' + file.string() + '\n' + (bytes ? std::to_string(bytes->size()) + '\n' + *bytes : "unreadable");
+    }
+  } catch (const InputError& e) {  // the scene's own name left out: copies of a file share a key
+    keyed += "\ndoes not load: " + (e.file() == sceneFile.string() ? std::string() : e.file()) + ' ' + e.field() + ' ' +
+             e.message();
+  } catch (const std::exception& e) {
+    keyed += std::string("\ndoes not load: ") + e.what();
+  }
+  return fnv1aHex(keyed);
 }
 
 }  // namespace weft::editor

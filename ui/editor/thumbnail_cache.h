@@ -4,9 +4,11 @@
 // Plain files, no GL and no ImGui.
 //
 // The folder: $WEFT_CACHE_DIR/thumbnails, else $XDG_CACHE_HOME/weft/thumbnails, else
-// ~/.cache/weft/thumbnails. The file name is the key: a hash of the scene file's bytes and of
-// how the thumbnail is drawn (kThumbnailStyle, its size), so a changed scene or a changed picture
-// never shows an old image. Deleting the folder is always safe.
+// ~/.cache/weft/thumbnails. The file name is the key: a hash of the scene file's bytes, of the
+// bytes of every file loading it reads (material and tear table presets, meshes, sharp tags: a
+// scene naming a preset looks different when the preset changes), and of how the thumbnail is
+// drawn (kThumbnailStyle, its size), so a changed scene, a changed file it loads or a changed
+// picture never shows an old image. Deleting the folder is always safe.
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -30,7 +32,9 @@ class ThumbnailCache {
  public:
   explicit ThumbnailCache(std::filesystem::path folder = defaultThumbnailFolder()) : folder_(std::move(folder)) {}
   const std::filesystem::path& folder() const { return folder_; }
-  // The key of a scene file as its bytes are now; none when it cannot be read.
+  // The key of a scene file as its bytes and those of the files it loads are now; none when the
+  // scene file cannot be read. A scene that does not load is keyed by its bytes and the reader's
+  // message, so it is tried again once the file it misses appears.
   static std::optional<std::string> keyOf(const std::filesystem::path& sceneFile);
   std::filesystem::path pathFor(const std::string& key) const { return folder_ / (key + ".png"); }
 
