@@ -115,7 +115,7 @@ std::size_t NonlocalStress::heapBytes() const {
 
 std::size_t TearSearch::heapBytes() const {
   return weft::heapBytes(triangleAt_) + weft::heapBytes(rowStart_) + weft::heapBytes(around_) +
-         weft::heapBytes(walked_) + weft::heapBytes(bound_) + weft::heapBytes(best_) + weft::heapBytes(evaluated_) +
+         weft::heapBytes(walked_) + weft::heapBytes(bound_) + weft::heapBytes(best_) +
          weft::heapBytes(excluded_) + weft::heapBytes(held_) + weft::heapBytes(sharpened_) + weft::heapBytes(place_) +
          weft::heapBytes(crackVertices_) + weft::heapBytes(version_) + weft::heapBytes(waiting_) +
          weft::heapBytes(evaluatedHeap_) + weft::heapBytes(unboundedHeap_);

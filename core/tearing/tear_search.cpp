@@ -91,7 +91,6 @@ void TearSearch::start(const ClothMesh& mesh, const std::vector<TriangleCorners>
   walked_.assign(n, 0);
   bound_.assign(n, 0.0);
   best_.assign(n, TearCandidate{});
-  evaluated_.assign(n, 0);
   excluded_.assign(n, 0);
   held_.assign(n, 0);
   sharpened_.assign(n, 0);
@@ -114,7 +113,6 @@ void TearSearch::refresh(const ClothMesh& mesh, const std::vector<TriangleCorner
   triangleAt_.resize(n, kNone);
   bound_.resize(n, 0.0);
   best_.resize(n);
-  evaluated_.resize(n, 0);
   excluded_.resize(n, 0);
   held_.resize(n, 0);
   sharpened_.resize(n, 0);
@@ -180,7 +178,6 @@ CrackPlace TearSearch::fanOf(const ClothMesh& mesh, const std::vector<TriangleCo
 
 void TearSearch::lookAt(const ClothMesh& mesh, const std::vector<TriangleCorners>& corners,
                         const std::vector<Mat2>& stress, int vertex, TearSearchCounts& counts) {
-  evaluated_[vertex] = 0;
   bound_[vertex] = 0.0;
   ++version_[vertex];
   sharpened_[vertex] = 0;
@@ -228,7 +225,6 @@ std::optional<TearCandidate> TearSearch::best(const ClothMesh& mesh, const std::
   auto dropStale = [&](std::vector<Entry>& heap) {
     while (!heap.empty() && !offerable(heap.front())) popEntry(heap);
   };
-  auto better = [](const Entry* a, const Entry* b) { return b == nullptr || (a != nullptr && HeapOrder{}(*b, *a)); };
   // Branch and bound: the waiting vertices in order of decreasing bound, until none left can beat
   // the best line found (ties are still evaluated, so the lower vertex id wins).
   while (true) {
@@ -278,13 +274,13 @@ std::optional<TearCandidate> TearSearch::best(const ClothMesh& mesh, const std::
       }
     }
     best_[v] = candidateAt(mesh, v, fan_, place, bestLineOf(mesh, stress, v, place, counts));
-    evaluated_[v] = 1;
     const double ratio = best_[v].ratio >= 0.0 ? best_[v].ratio : 0.0;  // NaN never leads
     pushEntry(unbounded ? unboundedHeap_ : evaluatedHeap_, Entry{ratio, v, version_[v]});
   }
+  // An unbounded vertex above 1 wins (the tips rule above); otherwise the better of the two leaders.
   const Entry* tip = unboundedHeap_.empty() ? nullptr : &unboundedHeap_.front();
   const Entry* other = evaluatedHeap_.empty() ? nullptr : &evaluatedHeap_.front();
-  const Entry* winner = tip != nullptr && tip->key > 1.0 ? tip : better(tip, other) ? tip : other;
+  const Entry* winner = tip == nullptr || (other != nullptr && tip->key <= 1.0 && HeapOrder{}(*tip, *other)) ? other : tip;
   if (winner == nullptr || !(winner->key > 1.0)) return std::nullopt;
   return best_[winner->vertex];
 }

@@ -96,8 +96,7 @@ class TearSearch {
   std::vector<int> rowStart_, around_;
   std::vector<char> walked_;
   std::vector<double> bound_;            // per vertex: bound on its best omega (0: cannot tear)
-  std::vector<TearCandidate> best_;      // per vertex: its best line, valid when evaluated_
-  std::vector<char> evaluated_;
+  std::vector<TearCandidate> best_;      // per vertex: its best line, valid while its heap entry is current
   std::vector<char> excluded_;
   std::vector<char> held_;
   std::vector<char> mature_;             // per vertex, with gated starts: may start a crack now

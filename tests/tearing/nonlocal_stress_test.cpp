@@ -99,6 +99,14 @@ TEST(NonlocalStress, ALipsOwnStretchIsLeftOutOfTheAverages) {
   }
 }
 
+// A random tensile-like stress per triangle.
+std::vector<Mat2> randomStresses(const ClothMesh& mesh, std::mt19937& random) {
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::vector<Mat2> local(mesh.tris.size());
+  for (Mat2& s : local) s = tensor(100.0 * unit(random), 50.0 * unit(random), 10.0 * unit(random));
+  return local;
+}
+
 // Up to 25 random tears through the mesh, each changed triangle given a new stress and the
 // averages patched as the tear stage does; returns how many tears were made.
 int tearAndPatch(ClothMesh& mesh, std::mt19937& random, std::vector<Mat2>& local, NonlocalStress& patched,
@@ -128,9 +136,7 @@ int tearAndPatch(ClothMesh& mesh, std::mt19937& random, std::vector<Mat2>& local
 TEST(NonlocalStress, APatchAfterTearsEqualsAFreshAverage) {
   ClothMesh mesh = grid(21);
   std::mt19937 random(7);
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
-  std::vector<Mat2> local(mesh.tris.size());
-  for (Mat2& s : local) s = tensor(100.0 * unit(random), 50.0 * unit(random), 10.0 * unit(random));
+  std::vector<Mat2> local = randomStresses(mesh, random);
   NonlocalStress patched;
   std::vector<Mat2> out;
   patched.average(mesh, local, 0.12, 0.0, out);
@@ -184,15 +190,13 @@ TEST(NonlocalStress, AKeptNeighbourhoodAveragesAnotherStressAsAFreshOne) {
 TEST(NonlocalStress, AnAverageAfterPatchesEqualsAFreshOne) {
   ClothMesh mesh = grid(21);
   std::mt19937 random(5);
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
-  std::vector<Mat2> local(mesh.tris.size());
-  for (Mat2& s : local) s = tensor(100.0 * unit(random), 50.0 * unit(random), 10.0 * unit(random));
+  std::vector<Mat2> local = randomStresses(mesh, random);
   NonlocalStress patched;
   std::vector<Mat2> out;
   patched.average(mesh, local, 0.12, 0.0, out);
   ASSERT_GT(tearAndPatch(mesh, random, local, patched, out), 10);
   // The next step: a new stress everywhere, the lists kept.
-  for (Mat2& s : local) s = tensor(100.0 * unit(random), 50.0 * unit(random), 10.0 * unit(random));
+  local = randomStresses(mesh, random);
   patched.average(mesh, local, 0.12, 0.0, out);
   NonlocalStress fresh;
   std::vector<Mat2> expected;
