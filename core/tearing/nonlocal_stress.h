@@ -59,7 +59,8 @@ class NonlocalStress {
   void average(const ClothMesh& mesh, const std::vector<Mat2>& local, double radius, double threshold,
                std::vector<Mat2>& out);
   // After a tear changed the listed triangles (their local stress is already updated; triangles
-  // the tear added need not be listed): the neighbourhoods and averages that depend on them,
+  // the tear added need not be listed; every other triangle's local stress is as the last call
+  // read it): the neighbourhoods and averages that depend on them,
   // recomputed on the new mesh. Returns the triangles whose average was recomputed. Follows an
   // `average` call on the same mesh.
   std::vector<int> patch(const ClothMesh& mesh, const std::vector<Mat2>& local, const std::vector<int>& changed,
@@ -73,6 +74,8 @@ class NonlocalStress {
   void gather(const ClothMesh& mesh, int t, double reach);
   // Triangle t's neighbourhood at `radius_` (its gather, lips left out) into `neighbours_[t]`.
   void buildNeighbours(const ClothMesh& mesh, int t);
+  // `local`'s distinct components into packed_, which averageAt reads.
+  void pack(const std::vector<Mat2>& local);
   Mat2 averageAt(const std::vector<Mat2>& local, int t) const;
   void updateCentroids(const ClothMesh& mesh, const std::vector<int>& triangles);
 
@@ -90,6 +93,10 @@ class NonlocalStress {
   std::vector<int> stamp_;       // per triangle: the gather that last visited it
   int currentStamp_ = 0;
   std::vector<int> region_;      // the last gather, t first
+  struct PackedStress {
+    double xx, yy, xy;
+  };
+  std::vector<PackedStress> packed_;  // the local stresses the averages read (see averageAt)
   std::vector<char> hot_;        // per triangle, this call: its local stress reaches the threshold
   std::vector<char> needed_;     // per triangle, this call: its average could reach the threshold
   std::vector<char> vertexNeeded_;  // per vertex, this call: it has a needed triangle

@@ -38,12 +38,15 @@ Vec2 arcForce(const StressFan& fan, double from, double length, const Vec2& gFro
   return force;
 }
 
-// The spectral norm of a symmetric 2x2 tensor: its largest absolute eigenvalue.
+}  // namespace
+
 double spectralNorm(const Mat2& s) {
   const double mean = 0.5 * (s(0, 0) + s(1, 1));
   const double half = 0.5 * (s(0, 0) - s(1, 1));
   return std::abs(mean) + std::sqrt(half * half + s(0, 1) * s(0, 1));
 }
+
+namespace {
 
 // Eq. 2.70-2.71 for the two sides' forces.
 double balancedPull(const Vec2& q1, const Vec2& q2) {

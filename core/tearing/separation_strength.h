@@ -70,6 +70,10 @@ void stressFan(const ClothMesh& mesh, int vertex, std::span<const int> around,
 // the ray at `angle`, which must lie inside the fan).
 double separationStrength(const StressFan& fan, double angle);
 
+// The spectral norm of a symmetric 2x2 tensor: its largest absolute eigenvalue (for sigma+, its
+// largest principal stress).
+double spectralNorm(const Mat2& s);
+
 // An upper bound of separationStrength over every line or ray: |q| of an arc is at most the
 // largest principal stress times the arc's angle, and min(|q1|, |q2|) at most their mean. A vertex
 // whose bound is below the weakest required strength cannot tear in any direction.

@@ -1,6 +1,7 @@
 #include "tearing/tear_candidates.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <utility>
@@ -122,17 +123,46 @@ LinePiece boundPiece(const StressFan& fan, const TearTable& table, double weftAn
   return piece;
 }
 
-// The pieces a fan's lines (a closed fan's half turn, an open fan's rays) start as: 5 degrees each
-// over a half turn.
-constexpr int kFirstPieces = 18;
+// The pieces a fan's lines (a closed fan's half turn, an open fan's rays) start as: cut at every
+// sector edge, so each piece has the explicit bound of second order in its width
+// (separationOverPiece), then cut into equal parts no wider than this. On a regular grid a vertex
+// has three edge directions modulo a half turn, so most fans start as 4 pieces, not the 18 equal
+// ones of 10 degrees that ignored the edges (measured on the pulled sheet's tearing steps: 147,000
+// lines against 209,000; 22.5-degree parts took 155,000, 15-degree ones 174,000).
+constexpr double kWidestFirstPiece = std::numbers::pi / 4;  // 45 degrees
+// Fans with more sectors than this (rare) start as equal pieces of that width, edges ignored.
+constexpr int kMostEdgesCut = 62;
 
 template <typename Visit>
-void forEachFirstPiece(const StressFan& fan, const Visit& visit) {
+int forEachFirstPiece(const StressFan& fan, const Visit& visit) {
   double from = 0.0, range = 0.0;
   sampledRange(fan, kNoTurnLimit, from, range);
-  if (!(range > 0.0)) return;
-  const double width = range / kFirstPieces;
-  for (int k = 0; k < kFirstPieces; ++k) visit(from + (k + 0.5) * width, 0.5 * width);
+  if (!(range > 0.0)) return 0;
+  // The cuts, as offsets from `from`: the range's ends, then each sector edge inside it (a line's
+  // sectors repeat every half turn).
+  std::array<double, kMostEdgesCut + 2> cuts;
+  int count = 0;
+  cuts[count++] = 0.0;
+  cuts[count++] = range;
+  if (static_cast<int>(fan.sectors.size()) <= kMostEdgesCut) {
+    const double period = fan.closed ? std::numbers::pi : 2.0 * std::numbers::pi;
+    for (const FanSector& sector : fan.sectors) {
+      double offset = std::fmod(sector.start - from, period);
+      if (offset < 0.0) offset += period;
+      if (offset > 0.0 && offset < range) cuts[count++] = offset;
+    }
+  }
+  std::sort(cuts.begin(), cuts.begin() + count);
+  int pieces = 0;
+  for (int k = 0; k + 1 < count; ++k) {
+    const double width = cuts[k + 1] - cuts[k];
+    if (!(width > 1e-12)) continue;  // two edges along one line
+    const int parts = static_cast<int>(std::ceil(width / kWidestFirstPiece - 1e-9));
+    const double part = width / parts;
+    for (int j = 0; j < parts; ++j) visit(from + cuts[k] + (j + 0.5) * part, 0.5 * part);
+    pieces += parts;
+  }
+  return pieces;
 }
 
 }  // namespace
@@ -179,8 +209,7 @@ bool anyLineAboveOneAt(const StressFan& fan, const TearTable& table, double weft
       std::push_heap(open.begin(), open.end(), order);
     }
   };
-  forEachFirstPiece(fan, consider);
-  for (int pieces = kFirstPieces; !found && !open.empty() && pieces < kMostPieces; pieces += 2) {
+  for (int pieces = forEachFirstPiece(fan, consider); !found && !open.empty() && pieces < kMostPieces; pieces += 2) {
     std::pop_heap(open.begin(), open.end(), order);
     const LinePiece widest = open.back();
     open.pop_back();

@@ -75,6 +75,9 @@ class TearSearch {
                          TearSearchCounts& counts);
 
  private:
+  // Every vertex's bound at the start of a step, the interior ones screened first by their arcs.
+  void screenAndLookAtAll(const ClothMesh& mesh, const std::vector<TriangleCorners>& corners,
+                          const std::vector<Mat2>& stress, TearSearchCounts& counts);
   void lookAt(const ClothMesh& mesh, const std::vector<TriangleCorners>& corners, const std::vector<Mat2>& stress,
               int vertex, TearSearchCounts& counts);
   void boundAt(const ClothMesh& mesh, const std::vector<TriangleCorners>& corners, const std::vector<Mat2>& stress,
@@ -94,6 +97,7 @@ class TearSearch {
   // The triangles around each vertex as the step began, in compressed rows (one pass over the
   // triangles, not a fan walk per vertex); a vertex a tear touched is `walked_` instead.
   std::vector<int> rowStart_, around_;
+  std::vector<double> aroundSpan_;       // per entry of around_: the vertex's corner angle in that triangle
   std::vector<char> walked_;
   std::vector<double> bound_;            // per vertex: bound on its best omega (0: cannot tear)
   std::vector<TearCandidate> best_;      // per vertex: its best line, valid while its heap entry is current
@@ -118,6 +122,8 @@ class TearSearch {
                                       // that read ahead; every vertex when the bound is off)
   bool offerable(const Entry& entry) const;
   StressFan fan_;                        // reused
+  std::vector<double> largestStress_;    // per triangle, this step's screen (reused)
+  std::vector<char> onBorder_;           // per vertex, at the start of the step
 };
 
 }  // namespace weft
