@@ -55,10 +55,10 @@ TearingBenchRow measure(const TearingBenchOptions& options, const std::string& l
       "tearing.candidates=\"" + lines + "\"", std::string("tearing.skip_by_bound=") + (bound ? "true" : "false"),
       std::string("tearing.propagate=") + (propagate ? "true" : "false"),
       "solver.threads=" + std::to_string(options.threads)};
-  if (growthMode) {
-    overrides.push_back("tearing.stress_length_m=" + std::to_string(kGrowthStressLength));
-    overrides.push_back("tearing.incubation_s=" + std::to_string(kGrowthIncubation));
-  }
+  // Every row states its mode in full, so the rows keep measuring the same modes whatever the
+  // scene's defaults are (the growth mode is the default since issue 17).
+  overrides.push_back("tearing.stress_length_m=" + std::to_string(growthMode ? kGrowthStressLength : 0.0));
+  overrides.push_back("tearing.incubation_s=" + std::to_string(growthMode ? kGrowthIncubation : 0.0));
   TearingBenchRow row;
   row.lines = lines;
   row.bound = bound;

@@ -13,9 +13,10 @@ struct TearingSpec {
   // Crack growth within a step (tear_stage.h). true: a crack that tears runs on from its new tips
   // within the step, each tip advancing at most crackSpeed * dt per step, so a crack's growth per
   // second does not depend on the element size, and tips read the material ahead of them
-  // (crackTipLength); false (default): the thesis' one pass per step (maxTearsPerStep lines), the
-  // next step's dynamics relaxing the stress. The README says why false is still the default.
-  bool propagate = false;
+  // (crackTipLength); false: the thesis' one pass per step (maxTearsPerStep lines), the next
+  // step's dynamics relaxing the stress. The default (with stressLength 0.065 and incubation 0.06)
+  // is the resolution-independent mode: the same crack growth at 32², 48², 64² (README, Tearing).
+  bool propagate = true;
   double crackSpeed = 50.0;      // m/s (material space): with propagate, the fastest a crack tip runs
   int relaxRings = 2;            // vertices within this many edges of a new crack end are relaxed
   int relaxSweeps = 0;           // Gauss-Seidel sweeps of that relaxation (0: none)
@@ -26,12 +27,12 @@ struct TearingSpec {
   // m (material space): the stress a tear reads is each triangle's averaged over this radius of
   // cloth around it (tearing/nonlocal_stress.h), so a crack tip's or a clamp's singular stress is
   // read the same at any resolution; 0: each triangle's own (the thesis).
-  double stressLength = 0.0;
+  double stressLength = 0.065;
   // s: a new crack starts only at a vertex whose omega has stayed above 1 this long (every step of
   // it), so a spike shorter than this (the ligament of a crack that is crossing the sheet, a strip
   // whipping into its clamp after it tore free) starts nothing; a crack's own tips run on at once.
   // 0: a crack starts as soon as omega > 1 (the thesis). tear_stage.h says why.
-  double incubation = 0.0;
+  double incubation = 0.06;
   bool branchFromLips = false;   // a vertex on a crack's flank may start a new crack (shattering)
   int maxTearsPerStep = 1;       // per cloth per step: new cracks (with propagate) or lines (without);
                                  // the thesis tears one

@@ -53,6 +53,25 @@ TEST(TearingJson, APresetTableAnInlineTableAndTheSectionAreRead) {
   EXPECT_FALSE(loadScene(dir.write("t4.json", sheet().dump())).cloths[0].material.tearTable.has_value());
 }
 
+// The default is the resolution-independent mode; the one-pass mode (the thesis', the default
+// before issue 17) stays selectable, and a scene that states it reads back as written.
+TEST(TearingJson, TheDefaultIsTheResolutionIndependentModeAndTheOnePassModeIsSelectable) {
+  TempDir dir;
+  const Scene plain = loadScene(dir.write("plain.json", sheet().dump()));
+  EXPECT_TRUE(plain.tearing.propagate);
+  EXPECT_DOUBLE_EQ(plain.tearing.stressLength, 0.065);
+  EXPECT_DOUBLE_EQ(plain.tearing.incubation, 0.06);
+  json scene = sheet();
+  scene["tearing"] = json::parse(R"({"propagate": false, "stress_length_m": 0, "incubation_s": 0})");
+  const std::string text = scene.dump(2);
+  const Scene onePass = loadScene(dir.write("one-pass.json", text));
+  EXPECT_FALSE(onePass.tearing.propagate);
+  EXPECT_EQ(onePass.tearing.stressLength, 0.0);
+  EXPECT_EQ(onePass.tearing.incubation, 0.0);
+  // Saved again (the editor writes the document it read) and read back: the same mode.
+  EXPECT_EQ(loadScene(dir.write("saved.json", json::parse(text).dump(2))).tearing, onePass.tearing);
+}
+
 struct BadTearing {
   std::string name;
   std::string patch;   // merged into the sheet scene

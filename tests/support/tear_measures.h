@@ -122,4 +122,53 @@ inline std::vector<Crack> cracks(const std::vector<TornSegment>& segments, doubl
   return out;
 }
 
+// Thesis §4.2, Figure 4.5 (Cloth 3): two vertical tears joined by a horizontal one, a flap. The
+// torn length within 22.5 degrees of vertical is grouped along x (a group ends where no vertical
+// segment's middle lies within `gap` of the next); the two longest groups are the two tears, and
+// the join is the torn length within 22.5 degrees of horizontal whose middle lies between them.
+struct FlapMeasure {
+  double vertical = 0.0;              // m of torn length within 22.5 degrees of vertical
+  double left = 0.0, right = 0.0;     // m in the two longest vertical groups (left one first)
+  double separation = 0.0;            // m between those groups (their nearest middles)
+  double joining = 0.0;               // m within 22.5 degrees of horizontal between them
+};
+
+inline FlapMeasure flapMeasure(const std::vector<TornSegment>& segments, double gap = 0.04) {
+  std::vector<TornSegment> vertical;
+  FlapMeasure out;
+  for (const TornSegment& s : segments) {
+    if (lineAngleBetweenDeg(s.directionDeg(), 90.0) <= 22.5) vertical.push_back(s);
+  }
+  out.vertical = tornLength(vertical);
+  auto middle = [](const TornSegment& s) { return 0.5 * (s.a.x() + s.b.x()); };
+  std::sort(vertical.begin(), vertical.end(),
+            [&](const TornSegment& p, const TornSegment& q) { return middle(p) < middle(q); });
+  struct Group {
+    double lo = 0.0, hi = 0.0, length = 0.0;
+  };
+  std::vector<Group> groups;
+  for (const TornSegment& s : vertical) {
+    const double x = middle(s);
+    if (groups.empty() || x - groups.back().hi > gap) groups.push_back(Group{x, x, 0.0});
+    groups.back().hi = x;
+    groups.back().length += s.length();
+  }
+  if (groups.size() < 2) {
+    if (!groups.empty()) out.left = groups.front().length;
+    return out;
+  }
+  std::sort(groups.begin(), groups.end(), [](const Group& p, const Group& q) { return p.length > q.length; });
+  if (groups[1].lo < groups[0].lo) std::swap(groups[0], groups[1]);
+  out.left = groups[0].length;
+  out.right = groups[1].length;
+  out.separation = groups[1].lo - groups[0].hi;
+  for (const TornSegment& s : segments) {
+    const double x = middle(s);
+    if (lineAngleBetweenDeg(s.directionDeg(), 0.0) <= 22.5 && x > groups[0].hi && x < groups[1].lo) {
+      out.joining += s.length();
+    }
+  }
+  return out;
+}
+
 }  // namespace weft::test

@@ -22,6 +22,16 @@ inline TearTable tearTable(std::vector<double> strength, double unit) {
   return t;
 }
 
+// The thesis' growth, the default before issue 17: one line per step from each triangle's own
+// stress, a crack starting in the step its omega passes 1. Tests whose claim is about that mode
+// (one step of the stage read on its own, lines per step) set it.
+inline Scene inOnePassMode(Scene scene) {
+  scene.tearing.propagate = false;
+  scene.tearing.stressLength = 0.0;
+  scene.tearing.incubation = 0.0;
+  return scene;
+}
+
 inline PinGroup edgePins(Vec2 lo, Vec2 hi, const Vec3& pull, double seconds) {
   PinGroup group;
   group.restBox = std::pair(lo, hi);
