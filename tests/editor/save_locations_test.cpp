@@ -112,6 +112,7 @@ TEST_F(SaveLocationsTest, SavingAShippedSceneAsksWhereTheUsersVersionGoes) {
   EXPECT_EQ(json::parse(readText(suggested))["cloths"][0]["weft_angle_deg"], 20.0);
   EXPECT_EQ(readText(shipped), shippedBytes);
   ASSERT_TRUE(session_->edit(withWeftAngle(session_->json(), 0, 25.0), "weft angle").accepted);
+  EXPECT_FALSE(session_->resetPending()) << "saved elsewhere, a weft edit still applies live";
   saveScene(*session_, ui_.panels);  // the user's own file now: saved in place
   EXPECT_FALSE(ui_.panels.saveAsRequested);
   EXPECT_EQ(json::parse(readText(suggested))["cloths"][0]["weft_angle_deg"], 25.0);
