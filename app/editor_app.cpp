@@ -70,7 +70,7 @@ struct ShortcutResult {
 
 // Keyboard shortcuts, when no text field has the keyboard. Esc closes an open popup (a combo's
 // list; the prompts answer Esc themselves) before it means quit.
-ShortcutResult applyShortcuts(editor::EditorSession& session, const ui::WindowInput& input) {
+ShortcutResult applyShortcuts(editor::EditorSession& session, editor::PanelState& panels, const ui::WindowInput& input) {
   ShortcutResult result;
   const ImGuiIO& io = ImGui::GetIO();
   if (ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId | ImGuiPopupFlags_AnyPopupLevel)) {
@@ -86,13 +86,7 @@ ShortcutResult applyShortcuts(editor::EditorSession& session, const ui::WindowIn
   if (ImGui::IsKeyPressed(GLFW_KEY_END, false)) session.showLive();
   if (io.KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_Z)) session.undo();
   if (io.KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_Y)) session.redo();
-  if (io.KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_S)) {
-    try {
-      session.save();
-    } catch (const std::exception& e) {
-      session.status = e.what();
-    }
-  }
+  if (io.KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_S)) editor::saveScene(session, panels);  // a shipped scene: Save as
   for (ui::Key key : input.keysPressed) {
     switch (key) {
       case ui::Key::kEscape: result.quit = true; return result;
@@ -238,7 +232,7 @@ int runEditor(const EditorOptions& options) {
     ImGui_ImplGlfw_NewFrame();
     inputQueue.applyTo(ImGui::GetIO());
     ImGui::NewFrame();
-    const ShortcutResult shortcut = applyShortcuts(*session, window.input());
+    const ShortcutResult shortcut = applyShortcuts(*session, ui.panels, window.input());
     if (shortcut.quit) ui.quit = editor::QuitPrompt::Asking;
     if (shortcut.frameScene || ui.frameScene) {
       camera = editor::frameSelection(session->view()->render, ui.panels.obstacle, camera, viewportRect().aspect());

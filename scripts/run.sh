@@ -8,8 +8,9 @@ scripts/install_deps.sh
 scripts/build.sh
 SCENE=presets/scenes/hanging-sheet.json
 if [ -n "${DISPLAY:-}${WAYLAND_DISPLAY:-}" ]; then
-  # The scene live in a window. When the window cannot open after all (an unreachable display),
-  # `weft edit` says why, runs headless by itself and prints where the PNG frames are.
-  exec ./build/app/weft edit "$SCENE"
+  # The editor's first scene live in a window: a ball tearing a denim sheet (issue 21, item 8).
+  # When the window cannot open after all (an unreachable display), `weft edit` says why, runs
+  # headless by itself and prints where the PNG frames are.
+  exec ./build/app/weft edit
 fi
 ./build/app/weft run "$SCENE" --out out/hanging-sheet --obj --png "$@"

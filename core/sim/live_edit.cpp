@@ -10,6 +10,9 @@ namespace {
 
 // `edited` with every live field taken from `running`: what is left to differ needs a reset.
 Scene withoutLiveEdits(const Scene& running, Scene edited) {
+  // Where the file lives names it in messages; what it loads is compared resolved (mesh and
+  // preset paths), so saving it elsewhere (Save as) does not make the next edit need a reset.
+  edited.file = running.file;
   edited.name = running.name;
   edited.description = running.description;
   edited.forces = running.forces;

@@ -3,15 +3,19 @@
 // shipped tool go beside the scene unless the user explicitly changes the shipped file.
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 
+#include <imgui_internal.h>
 #include <nlohmann/json.hpp>
 
 #include "contact/obstacle.h"
 #include "editor/editor_settings.h"
+#include "editor/scene_edits.h"
 #include "support/editor_panels_fixture.h"
 
 namespace weft::editor {
@@ -21,6 +25,7 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 
 using test::EditorPanelsTest;
+using test::HeadlessImGui;
 
 std::string readText(const fs::path& file) {
   std::ifstream in(file, std::ios::binary);
@@ -67,6 +72,78 @@ class SaveLocationsTest : public EditorPanelsTest {
   static constexpr int kToggledVertex = 0;
   const fs::path shippedSwordTags_ = fs::path(WEFT_SOURCE_DIR) / "assets" / "tools" / "sword.sharp.json";
 };
+
+// Save (the button, File > Save, Ctrl+S) on a scene shipped with Weft does not write over it, as
+// Ctrl+S on the default scene did: the "Save scene as" dialog opens, saying why, with a copy in
+// ~/weft/scenes suggested; saving there creates the folder, and Save then writes the copy.
+// The shipped folder here is $WEFT_DATA_DIR's, a copy in the test's folder.
+TEST_F(SaveLocationsTest, SavingAShippedSceneAsksWhereTheUsersVersionGoes) {
+  const fs::path data = dir_.path() / "data";
+  fs::create_directories(data / "presets" / "scenes");
+  const fs::path shipped = data / "presets" / "scenes" / "shipped.json";
+  fs::copy_file(scene_, shipped);
+  const std::string shippedBytes = readText(shipped);
+  setenv("WEFT_DATA_DIR", data.c_str(), 1);
+  const char* home = std::getenv("HOME");
+  const std::string oldHome = home != nullptr ? home : "";
+  setenv("HOME", (dir_.path() / "home").c_str(), 1);
+  session_ = std::make_unique<EditorSession>(shipped);
+  ASSERT_TRUE(session_->savesIntoInstalledData());
+  ASSERT_TRUE(session_->edit(withWeftAngle(session_->json(), 0, 20.0), "weft angle").accepted);
+  EXPECT_THROW(session_->save(), std::runtime_error) << "the session itself refuses";
+
+  imgui_->frame(drawUi());
+  imgui_->click(probe_.centre("scene/save"), drawUi());
+  imgui_->frame(drawUi());
+  EXPECT_EQ(readText(shipped), shippedBytes) << "the shipped scene is untouched";
+  EXPECT_FALSE(fs::exists(fs::path(shipped) += ".bak"));
+  EXPECT_EQ(ImGui::GetCurrentContext()->OpenPopupStack.Size, 1) << "the dialog asks where the user's version goes";
+  const fs::path suggested = dir_.path() / "home" / "weft" / "scenes" / "shipped.json";
+  EXPECT_EQ(fs::path(ui_.panels.saveAsPath), suggested);
+  EXPECT_NE(session_->status.find("ships with Weft"), std::string::npos) << session_->status;
+
+  imgui_->frame(drawUi());  // the dialog's field takes the keyboard
+  imgui_->tap(HeadlessImGui::kEnterKey, drawUi());  // the suggested file
+  imgui_->frame(drawUi());
+  unsetenv("WEFT_DATA_DIR");
+  setenv("HOME", oldHome.c_str(), 1);
+  EXPECT_EQ(session_->document().file(), suggested);
+  EXPECT_FALSE(session_->dirty());
+  EXPECT_EQ(json::parse(readText(suggested))["cloths"][0]["weft_angle_deg"], 20.0);
+  EXPECT_EQ(readText(shipped), shippedBytes);
+  ASSERT_TRUE(session_->edit(withWeftAngle(session_->json(), 0, 25.0), "weft angle").accepted);
+  EXPECT_FALSE(session_->resetPending()) << "saved elsewhere, a weft edit still applies live";
+  saveScene(*session_, ui_.panels);  // the user's own file now: saved in place
+  EXPECT_FALSE(ui_.panels.saveAsRequested);
+  EXPECT_EQ(json::parse(readText(suggested))["cloths"][0]["weft_angle_deg"], 25.0);
+}
+
+// The sharp tags of a shipped tool in a shipped scene: "beside the scene" would be Weft's own
+// presets folder, so it is refused (the dialog offers it disabled); kept in the scene, they go
+// with the user's version of it (Save as).
+TEST_F(SaveLocationsTest, AShippedScenesToolTagsAreNotSavedBesideIt) {
+  const fs::path data = dir_.path() / "data";
+  fs::create_directories(data / "presets" / "scenes");
+  std::ifstream in(fs::path(WEFT_SOURCE_DIR) / "presets" / "scenes" / "sword-into-sheet.json");
+  json scene = json::parse(in);
+  scene["cloths"][0]["mesh"]["grid"]["resolution"] = json::array({8, 8});
+  const fs::path shipped = data / "presets" / "scenes" / "sword.json";
+  std::ofstream(shipped) << scene.dump(2);
+  const std::string shippedBytes = readText(shipped);
+  setenv("WEFT_DATA_DIR", data.c_str(), 1);
+  session_ = std::make_unique<EditorSession>(shipped);
+  ToolTagEditor tool(*session_, 0);
+  tool.toggleVertex(*session_, 0);
+  EXPECT_THROW(tool.saveBesideScene(*session_), std::runtime_error);
+  EXPECT_FALSE(fs::exists(data / "presets" / "scenes" / "sword.sharp.json"));
+  EXPECT_EQ(readText(shipped), shippedBytes);
+  tool.saveInScene(*session_);
+  EXPECT_TRUE(session_->dirty()) << "the tags are in the scene, to be saved with it";
+  saveScene(*session_, ui_.panels);
+  EXPECT_TRUE(ui_.panels.saveAsRequested) << "the scene is shipped: Save as";
+  EXPECT_EQ(readText(shipped), shippedBytes);
+  unsetenv("WEFT_DATA_DIR");
+}
 
 TEST_F(SaveLocationsTest, APresetGoesToTheChosenFolderWhichIsCreatedAndRemembered) {
   const fs::path materials = dir_.path() / "materials";  // the scene's ../materials, not there yet

@@ -14,7 +14,9 @@
 #include <string>
 #include <vector>
 
+#include "editor/panels/preset_names.h"
 #include "editor/scene_browser.h"
+#include "editor/scene_listing_cache.h"
 #include "editor/thumbnail_cache.h"
 #include "png_reader.h"
 #include "scene/scene_json.h"
@@ -106,6 +108,75 @@ TEST(ThumbnailCache, KeyFollowsTheBytesOfThePresetsTheSceneLoads) {
 
   fs::remove(material);  // the project's preset of that name is found instead
   EXPECT_NE(ThumbnailCache::keyOf(scene), tableChanged) << "another file resolved";
+}
+
+// Opening the browser again rescans its folders without reading unchanged files again: a scene's
+// description and key (which read the scene and every file it loads) and a preset's source are
+// kept with the size and time of the files they came from. A changed scene, a changed file it
+// loads, and a preset added to a folder it searches first are read again; nothing else is.
+TEST(SceneListingCache, AnUnchangedFileIsNotReadAgainAChangedOneIs) {
+  test::TempDir dir;
+  const fs::path presets = fs::path(WEFT_SOURCE_DIR) / "presets";
+  fs::create_directories(dir.path() / "tear_tables");
+  const fs::path table = dir.path() / "tear_tables" / "karaoz2015-table4.1-cloth2.json";
+  fs::copy_file(presets / "tear_tables" / "karaoz2015-table4.1-cloth2.json", table);
+  fs::create_directories(dir.path() / "scenes");
+  const fs::path sheet = dir.path() / "scenes" / "sheet.json";
+  const fs::path hanging = dir.path() / "scenes" / "hanging.json";
+  fs::copy_file(presets / "scenes" / "ball-into-sheet-table4.1-cloth2.json", sheet);
+  fs::copy_file(presets / "scenes" / "hanging-sheet.json", hanging);
+  const fs::path material = presets / "materials" / "11oz-black-denim.json";
+
+  SceneListingCache cache;
+  const SceneListing first = cache.scene(sheet);
+  EXPECT_EQ(first.key, ThumbnailCache::keyOf(sheet).value_or("")) << "the thumbnail key, as keyOf makes it";
+  EXPECT_FALSE(first.description.empty());
+  (void)cache.scene(hanging);
+  const std::string source = cache.presetSource(material);
+  EXPECT_FALSE(source.empty());
+  ASSERT_EQ(cache.reads(), 3);
+
+  for (int reopen = 0; reopen < 3; ++reopen) {
+    EXPECT_EQ(cache.scene(sheet).key, first.key);
+    EXPECT_EQ(cache.scene(hanging).description, sceneDescription(hanging));
+    EXPECT_EQ(cache.presetSource(material), source);
+  }
+  EXPECT_EQ(cache.reads(), 3) << "unchanged files are not read again";
+
+  const auto append = [](const fs::path& file, const std::string& text) {
+    std::ofstream(file, std::ios::app) << text;  // other size: seen even within one clock tick
+  };
+  append(hanging, "\n");
+  EXPECT_EQ(cache.scene(hanging).key, ThumbnailCache::keyOf(hanging).value_or(""));
+  EXPECT_EQ(cache.scene(sheet).key, first.key);
+  EXPECT_EQ(cache.reads(), 4) << "the changed scene, and only it, is read again";
+
+  append(table, "\n");  // a file the sheet loads
+  const SceneListing tableChanged = cache.scene(sheet);
+  EXPECT_EQ(cache.reads(), 5);
+  EXPECT_NE(tableChanged.key, first.key);
+  EXPECT_EQ(tableChanged.key, ThumbnailCache::keyOf(sheet).value_or(""));
+
+  fs::create_directories(dir.path() / "materials");  // a preset of the same name, found first now
+  fs::copy_file(material, dir.path() / "materials" / "11oz-black-denim.json");
+  append(dir.path() / "materials" / "11oz-black-denim.json", " ");
+  const SceneListing shadowed = cache.scene(sheet);
+  EXPECT_EQ(cache.reads(), 6) << "a folder the scene searches changed";
+  EXPECT_NE(shadowed.key, tableChanged.key);
+  EXPECT_EQ(shadowed.key, ThumbnailCache::keyOf(sheet).value_or(""));
+}
+
+TEST_F(SceneBrowserTest, ReopeningTheBrowserReadsOnlyTheFilesThatChanged) {
+  addHangingSheet();
+  SceneBrowser browser({folder()}, ThumbnailCache(dir_.path() / "cache"));
+  const int listed = browser.listings().reads();
+  ASSERT_GE(listed, 2) << "two scenes and the material presets";
+  browser.rescan();
+  browser.rescan();
+  EXPECT_EQ(browser.listings().reads(), listed) << "nothing changed, nothing read";
+  std::ofstream(hangingSheet_, std::ios::app) << "\n";
+  browser.rescan();
+  EXPECT_EQ(browser.listings().reads(), listed + 1) << "the changed scene only";
 }
 
 TEST_F(SceneBrowserTest, AThumbnailIsRenderedOnceAndCachedByTheSceneFilesContent) {

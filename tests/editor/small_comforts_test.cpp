@@ -65,6 +65,17 @@ TEST_F(EditorPanelsTest, ThePolarPlotsLabelsAreInsideThePlot) {
       << "the label runs out of the plot";
 }
 
+// The timeline's memory line (frames, copies, MB of the budget, the change log) is wrapped to
+// the Playback panel's width: in the narrow left column it ran past the edge, the budget cut off.
+TEST_F(EditorPanelsTest, TheTimelinesMemoryLineFitsThePlaybackPanel) {
+  imgui_->frame(drawUi());
+  ASSERT_TRUE(probe_.rects.count("play/cache") && probe_.rects.count("play/timeline"));
+  const ImVec4 line = probe_.rects.at("play/cache");
+  const ImVec4 bar = probe_.rects.at("play/timeline");  // as wide as the panel's content
+  EXPECT_LE(line.z, bar.z + 1.0f) << "the line runs out of the panel";
+  EXPECT_GT(line.w - line.y, 1.5f * ImGui::GetTextLineHeight()) << "wrapped onto more lines";
+}
+
 TEST_F(EditorPanelsTest, AScenePausedAtTheStartShowsWhatToPress) {
   auto darkPixelsOverTheViewport = [&] {
     const test::RgbaImage image = imgui_->image();

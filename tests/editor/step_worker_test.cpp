@@ -10,6 +10,9 @@
 #include <memory>
 #include <optional>
 #include <filesystem>
+#include <functional>
+#include <future>
+#include <thread>
 #include <fstream>
 #include <string>
 
@@ -187,6 +190,81 @@ TEST(StepWorker, TheChangeLogGoesBackOnlyAsFarAsTheOldestWorldCopyHeld) {
   const std::optional<StepResult> rewound = worker.takeResult();
   ASSERT_TRUE(rewound && rewound->rewoundTo);
   EXPECT_EQ(*rewound->rewoundTo, end);
+}
+
+// R while a heavy scene plays: the reset (attach) lands while a step runs, and drops the owed
+// steps, the running one included. The step that ends afterwards does not count itself off again
+// (owed -1: the worker slept and the reset's copy of the new world waited for it forever, the
+// editor hung). The same for going back to a frame (resumeFrom) while a step runs.
+TEST(StepWorker, AResetOrAResumeWhileAStepRunsDoesNotHangTheNextWait) {
+  test::TempDir dir;
+  const Scene scene = loadScene(sheet(dir, 20, 150));  // a step of about 0.1 s and more
+  StepWorker worker(std::make_unique<World>(scene));
+  const std::shared_ptr<const World> start = worker.copyWhenIdle();
+  const auto waitsAtMost = [&](const std::function<void()>& wait) {
+    auto done = std::make_shared<std::promise<void>>();
+    std::future<void> finished = done->get_future();
+    std::thread waiter([wait, done] {
+      wait();
+      done->set_value();
+    });
+    const bool ended = finished.wait_for(std::chrono::seconds(30)) == std::future_status::ready;
+    if (!ended) worker.ask(2, 2);  // wakes the worker so the waiter (and the test) can end
+    waiter.join();
+    return ended;
+  };
+  worker.ask(5, 5);
+  std::this_thread::sleep_for(std::chrono::milliseconds(30));
+  ASSERT_TRUE(worker.busy());
+  worker.attach(std::make_unique<World>(scene));  // R while playing
+  EXPECT_TRUE(waitsAtMost([&] { (void)worker.copyWhenIdle(); })) << "the reset's copy waited forever";
+  EXPECT_EQ(worker.owed(), 0);
+
+  worker.ask(5, 5);
+  std::this_thread::sleep_for(std::chrono::milliseconds(30));
+  worker.resumeFrom(start, 0);  // back to frame 0 while a step runs
+  EXPECT_TRUE(waitsAtMost([&] { (void)worker.idleWorld(); })) << "the wait after going back never ended";
+  EXPECT_EQ(worker.idleWorld().stepCount(), 0);
+}
+
+// A drag while paused (the grab's target, a tool's position, set every frame at the same step)
+// logs one change, not one a frame: a setter's change replaces the same setter's change logged
+// right before it between the same two steps. Other changes in between keep both; replaying the
+// log still gives the world as it is.
+TEST(StepWorker, ADragWhilePausedLogsOneChangeNotOneAFrame) {
+  test::TempDir dir;
+  json sheetJson = preset("ball-into-sheet-table4.1-cloth2");
+  sheetJson["cloths"][0]["mesh"]["grid"]["resolution"] = json::array({10, 10});
+  sheetJson["solver"]["linear_solver"]["preconditioner"] = "block_jacobi";
+  const Scene scene = loadScene(dir.write("scenes/sheet.json", sheetJson.dump(2)));
+  StepWorker worker(std::make_unique<World>(scene));
+  const std::shared_ptr<const World> start = worker.copyWhenIdle();
+  worker.ask(3, 3);
+  worker.wait();
+  const Vec3 at = worker.idleWorld().cloth(0).x[5];
+  worker.apply([at](World& world) { world.grab(0, 5, at, 60.0); });
+  const auto move = [&](double dy) {
+    const Vec3 target = at + Vec3(0.0, dy, 0.0);  // a Vec3, not an Eigen expression of a temporary
+    worker.apply(WorldChange{[target](World& world) { world.moveGrab(target); }, "grab target", 0});
+  };
+  for (int frame = 0; frame < 200; ++frame) move(0.001 * frame);
+  EXPECT_EQ(worker.loggedChanges(), 2u) << "the grab and its latest target";
+  worker.apply([](World& world) { world.setForces(world.scene().forces); });
+  move(0.3);
+  EXPECT_EQ(worker.loggedChanges(), 4u) << "a change in between: the target set after it is another change";
+  worker.ask(2, 2);
+  worker.wait();
+  move(0.4);
+  EXPECT_EQ(worker.loggedChanges(), 5u) << "after a step: another change";
+  worker.ask(2, 2);
+  worker.wait();
+  const std::uint64_t liveHash = worker.idleWorld().stateHash();
+  const long long end = worker.idleWorld().stepCount();
+  worker.resumeFrom(start, end);
+  EXPECT_EQ(worker.idleWorld().stateHash(), liveHash) << "the log replayed gives the world that never stopped";
+  ASSERT_TRUE(worker.idleWorld().grabState());
+  const Vec3 last = at + Vec3(0.0, 0.4, 0.0);
+  EXPECT_EQ(worker.idleWorld().grabState()->spring.target, last) << "the last target set";
 }
 
 }  // namespace

@@ -5,9 +5,11 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <memory>
 #include <string>
 
@@ -249,6 +251,109 @@ TEST(Timeline, AFrameWithoutItsOwnCopyResumesFromTheNearestEarlierOne) {
   ASSERT_EQ(scrubbed.liveFrame(), live.liveFrame());
   EXPECT_EQ(scrubbed.world().stateHash(), live.world().stateHash());
   EXPECT_EQ(scrubbed.world().tearLog().size(), live.world().tearLog().size());
+}
+
+// A long tearing session with a change every frame (step_worker.h: the user's changes a resume
+// replays are logged from the oldest copy held, frame 0's) keeps the timeline, the change log
+// counted in, within its budget. Each change here says it holds `changeBytes` (a heavy edit), so
+// the log matters within a few dozen frames. Returns what each frame showed when it was simulated.
+struct LongSession {
+  std::map<long long, std::uint64_t> positions;  // each frame's positions when simulated
+  std::map<long long, std::size_t> vertices;     // a tear splits vertices
+  std::size_t mostLogged = 0;                    // the worker's log at its longest
+};
+LongSession playWithAChangeEveryFrame(EditorSession& session, int frames, std::size_t changeBytes) {
+  LongSession run;
+  run.positions[0] = positionsHash(*session.view());
+  run.vertices[0] = session.view()->cloths[0].x.size();
+  for (int frame = 1; frame <= frames; ++frame) {
+    session.applyToWorld(WorldChange{[frame](World& world) {
+                                       ForcesSpec forces = world.scene().forces;
+                                       forces.gravity = Vec3(0.3 * std::sin(frame), -9.81 + 0.5 * std::cos(frame), 0.0);
+                                       world.setForces(forces);
+                                     },
+                                     {}, changeBytes});
+    playFrames(session, 1);
+    EXPECT_LE(session.frames().bytes(), session.frames().budgetBytes()) << "frame " << frame;
+    const std::shared_ptr<const WorldSnapshot> newest = session.frames().find(frame);
+    EXPECT_TRUE(newest) << "frame " << frame << ": the newest frame is always kept";
+    if (!newest) continue;
+    run.positions[frame] = positionsHash(*newest);
+    run.vertices[frame] = newest->cloths[0].x.size();
+    run.mostLogged = std::max(run.mostLogged, session.loggedChanges());
+  }
+  return run;
+}
+
+// Going back to `frame` (an edit that changes nothing) puts the world where it was when the frame
+// was simulated, to the bit (block Jacobi), however far back its nearest kept copy is.
+void expectResumesExactly(EditorSession& session, long long frame, const LongSession& run) {
+  session.showFrame(frame);
+  session.applyToWorld([](World&) {});
+  const World& resumed = session.world();
+  EXPECT_EQ(resumed.stepCount(), frame * session.stepsPerFrame());
+  const std::shared_ptr<const WorldSnapshot> now = snapshotOf(resumed);
+  EXPECT_EQ(positionsHash(*now), run.positions.at(frame)) << "frame " << frame << ", resumed from "
+                                                          << session.lastResume()->from;
+  EXPECT_EQ(now->cloths[0].x.size(), run.vertices.at(frame)) << "frame " << frame << ": its torn topology";
+}
+
+TEST(Timeline, TheChangeLogCountsInTheBudgetAndFrameZeroStillShowsTheUntornSheet) {
+  test::TempDir dir;
+  EditorSession session(blockJacobiSheet(dir, "long.json"));
+  playFrames(session, 12);
+  const std::size_t s = snapshotBytes(*session.frames().find(12));
+  const std::size_t w = session.frames().worldAt(12)->approximateBytes();
+  session.reset();
+  const std::size_t budget = 40 * s + 6 * w;
+  session.setTimelineBudget(budget);
+  const LongSession run = playWithAChangeEveryFrame(session, 90, budget / 180);  // 90 changes: half the budget
+  ASSERT_GT(session.world().tearLog().size(), 0u) << "the ball tore the sheet";
+  EXPECT_GT(run.vertices.at(90), run.vertices.at(0));
+  EXPECT_GE(session.frames().changeLogBytes(), budget / 2) << "the log takes the place of frames";
+  EXPECT_LT(session.frames().frameCount(), 91u) << "frames went to make room for it";
+  ASSERT_EQ(session.frames().firstFrame(), 0) << "while the log fits, frame 0 stays";
+  EXPECT_EQ(session.loggedChanges(), 90u) << "every change since frame 0's copy";
+  session.showFrame(0);
+  EXPECT_EQ(session.view()->cloths[0].x.size(), run.vertices.at(0)) << "frame 0 shows the sheet untorn";
+  EXPECT_LT(session.view()->cloths[0].x.size(), session.world().cloth(0).x.size());
+  EXPECT_EQ(positionsHash(*session.view()), run.positions.at(0));
+  // A frame near the end, its copy thinned: stepped forward from frame 0's with every change replayed.
+  const long long target = session.frames().lastFrame() - 1;
+  ASSERT_FALSE(session.frames().worldAt(target));
+  expectResumesExactly(session, target, run);
+  EXPECT_EQ(session.lastResume()->from, 0);
+}
+
+TEST(Timeline, ALogOutgrowingTheBudgetTakesFrameZeroWithItAndStaysBounded) {
+  test::TempDir dir;
+  EditorSession session(blockJacobiSheet(dir, "longer.json"));
+  playFrames(session, 12);
+  const std::size_t s = snapshotBytes(*session.frames().find(12));
+  const std::size_t w = session.frames().worldAt(12)->approximateBytes();
+  session.reset();
+  const std::size_t budget = 10 * s + 3 * w;
+  session.setTimelineBudget(budget);
+  const std::size_t change = w / 4;
+  const LongSession run = playWithAChangeEveryFrame(session, 60, change);
+  ASSERT_GT(session.world().tearLog().size(), 0u) << "the ball tore the sheet";
+  EXPECT_GT(session.frames().firstFrame(), 0) << "frame 0 went, and the log before the frames left";
+  // The worker trims its log when it next logs or copies, a frame after the timeline let go.
+  EXPECT_LE(run.mostLogged, budget / change + 2) << "the log never outgrew the budget";
+  EXPECT_LT(session.loggedChanges(), 60u);
+  // The oldest frame left, and one after it without its own copy, still resume exactly.
+  const long long first = session.frames().firstFrame();
+  ASSERT_TRUE(session.frames().worldAt(first)) << "the first frame keeps its copy";
+  long long target = -1;
+  for (long long f = session.frames().lastFrame() - 1; f > first && target < 0; --f) {
+    if (session.frames().find(f) && !session.frames().worldAt(f)) target = f;
+  }
+  ASSERT_GT(target, first) << "a frame after it without its own copy";
+  expectResumesExactly(session, target, run);
+  EXPECT_EQ(session.lastResume()->from, first);
+  session.showFrame(first);
+  EXPECT_EQ(session.view()->cloths[0].x.size(), run.vertices.at(first));
+  expectResumesExactly(session, first, run);
 }
 
 // Going back twice to the same frame starts from the same state both times: the cached frame's

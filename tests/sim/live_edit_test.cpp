@@ -163,6 +163,8 @@ TEST(LiveEdit, NeedsResetForStructureNotForMaterial) {
   edited.output.camera.yawDeg = 90.0;
   edited.name = "renamed";
   EXPECT_FALSE(needsReset(running, edited));
+  edited.file = "/elsewhere/saved-as.json";  // the editor's Save as: the next edit still applies live
+  EXPECT_FALSE(needsReset(running, edited));
 
   const auto resets = [&](auto change) {
     Scene s = running;

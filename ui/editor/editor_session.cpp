@@ -4,7 +4,10 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
+#include <system_error>
 
+#include "editor/installed_data.h"
 #include "scene/scene_json.h"
 #include "sim/finite_state.h"
 #include "sim/live_edit.h"
@@ -13,6 +16,12 @@
 namespace weft::editor {
 
 namespace {
+
+// What a scene copy holds, roughly: the structs, and for their tables, names and key lists 2 kB a
+// cloth (a material's measured table and tear table) and 512 B an obstacle.
+std::size_t sceneBytes(const Scene& scene) {
+  return sizeof(Scene) + scene.cloths.size() * (sizeof(ClothSpec) + 2048) + scene.obstacles.size() * (sizeof(ObstacleSpec) + 512);
+}
 
 Scene parse(const nlohmann::json& j, const std::filesystem::path& file) {
   return parseScene(j, file, defaultSearchPaths(file));
@@ -68,7 +77,9 @@ void EditorSession::applyDocument(const std::string& label) {
     status = label + ": applies after a reset";
   } else {
     // Between steps: the worker may be in the middle of one.
-    applyToWorld([edited](World& world) { applyLiveEdits(world, edited); });
+    // Shared, not copied: a slider dragged while playing logs a change every frame.
+    auto shared = std::make_shared<const Scene>(edited);
+    applyToWorld(WorldChange{[shared](World& world) { applyLiveEdits(world, *shared); }, {}, sceneBytes(edited)});
     liveScene_ = edited;
     resetPending_ = false;
     status = label + ": applied live";
@@ -123,7 +134,7 @@ std::shared_ptr<const WorldSnapshot> EditorSession::view() const {
   return worker_->snapshot();
 }
 
-void EditorSession::applyToWorld(std::function<void(World&)> change) {
+void EditorSession::applyToWorld(WorldChange change) {
   const std::optional<long long> from =
       shownFrame_ && !rewinding_ && *shownFrame_ < liveFrame() ? frames_.worldFrameAtOrBefore(*shownFrame_) : std::nullopt;
   if (from) {
@@ -132,7 +143,8 @@ void EditorSession::applyToWorld(std::function<void(World&)> change) {
     // forward), with the scene as the document has it now, and continues from there.
     worker_->resumeFrom(frames_.worldAt(*from), *shownFrame_ * frameSteps_);
     lastResume_ = Resume{*shownFrame_, *from};
-    worker_->apply([scene = liveScene_](World& world) { applyLiveEdits(world, scene); });
+    auto scene = std::make_shared<const Scene>(liveScene_);
+    worker_->apply(WorldChange{[scene](World& world) { applyLiveEdits(world, *scene); }, {}, sceneBytes(*scene)});
     frames_.invalidateAfter(*shownFrame_);
     rewinding_ = true;
     stopped_ = false;
@@ -140,6 +152,13 @@ void EditorSession::applyToWorld(std::function<void(World&)> change) {
     shownFrame_.reset();  // a frame kept without its world: the change lands on the live world, shown
   }
   worker_->apply(std::move(change));
+  countChangeLog();
+}
+
+void EditorSession::countChangeLog() {
+  std::vector<FrameCache::LoggedChange> log;
+  for (const StepWorker::LoggedBytes& logged : worker_->loggedBytes()) log.push_back({logged.step / frameSteps_, logged.bytes});
+  frames_.setChangeLog(std::move(log));
 }
 
 long long EditorSession::liveFrame() const { return worker_->snapshot()->stepCount / frameSteps_; }
@@ -167,6 +186,7 @@ void EditorSession::collectSteps() {
     meteredTime_ = worker_->snapshot()->time;
   }
   for (const StepResult::Frame& frame : result->frames) frames_.add(frame.frame, frame.snapshot, frame.world);
+  countChangeLog();
   if (result->unhealthy && !unhealthy_) {
     unhealthy_ = result->unhealthy;
     status = "warning: " + healthWarning(*unhealthy_);
@@ -232,12 +252,20 @@ void EditorSession::stepOnce() {
   if (!stopped_) worker_->ask(1, worker_->owed() + 1);
 }
 
+bool EditorSession::savesIntoInstalledData() const { return isInstalledData(document_.file()); }
+
 void EditorSession::save() {
+  if (savesIntoInstalledData()) {
+    throw std::runtime_error(document_.file().filename().string() +
+                             " is a scene shipped with Weft, used by everyone: Save as... to keep your version elsewhere");
+  }
   document_.save();
   status = "saved " + document_.file().string();
 }
 
 void EditorSession::saveAs(const std::filesystem::path& file) {
+  std::error_code ec;
+  if (!file.parent_path().empty()) std::filesystem::create_directories(file.parent_path(), ec);  // else the save says why
   document_.saveAs(file);
   status = "saved " + file.string();
 }

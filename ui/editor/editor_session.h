@@ -67,9 +67,11 @@ class EditorSession {
   // Changes the running world between steps: at once when no step runs, else queued for the
   // worker. Looking at an earlier frame of the timeline, the simulation first goes back there:
   // the frames after it are dropped and it continues from it with the change.
-  void applyToWorld(std::function<void(World&)> change);
+  void applyToWorld(WorldChange change);
+  void applyToWorld(std::function<void(World&)> change) { applyToWorld(WorldChange{std::move(change), {}, 0}); }
 
   // The timeline: output frames simulated since the last reset, cached (frame_cache.h).
+  // Its budget counts the worker's change log too (step_worker.h).
   const FrameCache& frames() const { return frames_; }
   void setTimelineBudget(std::size_t bytes) { frames_.setBudget(bytes); }
   // The last time an edit went back to an earlier frame: the frame, and the frame whose kept
@@ -79,6 +81,7 @@ class EditorSession {
     long long from = 0;
   };
   const std::optional<Resume>& lastResume() const { return lastResume_; }
+  std::size_t loggedChanges() const { return worker_->loggedChanges(); }  // the changes a resume may replay
   long long stepsPerFrame() const { return frameSteps_; }
   // The frame the world is at (whole frames of steps, as far as the worker got).
   long long liveFrame() const;
@@ -123,8 +126,12 @@ class EditorSession {
   const std::optional<HealthFailure>& unhealthy() const { return unhealthy_; }
   const PlaybackMeter& meter() const { return meter_; }
 
-  void save();                                   // atomic, keeping the previous file as FILE.bak
-  void saveAs(const std::filesystem::path& file);
+  // Atomic, keeping the previous file as FILE.bak. A scene shipped with Weft (installed_data.h)
+  // is not overwritten by a plain save: it throws, saying to save a copy (Save as, which may
+  // name the shipped file itself: the user said so).
+  void save();
+  void saveAs(const std::filesystem::path& file);  // creates the folder when missing
+  bool savesIntoInstalledData() const;             // a plain save() would write a shipped scene
   bool dirty() const { return document_.dirty(); }
 
   // Writes the autosave when there are unsaved edits (the editor calls it every few seconds).
@@ -138,6 +145,7 @@ class EditorSession {
   void applyDocument(const std::string& label);
   void rebuildWorld();
   void collectSteps();  // the finished batch's step times and non-finite stop
+  void countChangeLog();  // the worker's change log, into the timeline's budget
 
   JsonDocument document_;
   Scene scene_;

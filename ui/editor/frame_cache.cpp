@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <iterator>
+#include <utility>
 #include <vector>
 
 namespace weft::editor {
@@ -48,20 +49,41 @@ void FrameCache::setBudget(std::size_t budgetBytes) {
   fitBudget();
 }
 
-void FrameCache::fitBudget() {
-  while (bytes_ > budgetBytes_ && dropOneWorld()) {
+void FrameCache::setChangeLog(std::vector<LoggedChange> log) {
+  changeLog_ = std::move(log);
+  fitBudget();
+}
+
+std::size_t FrameCache::changeLogBytes() const {
+  long long from = -1;  // the oldest frame keeping a copy: the worker keeps the log from there on
+  for (const auto& [frame, entry] : frames_) {
+    if (entry.world) {
+      from = frame;
+      break;
+    }
   }
-  // No world copy left to drop: the oldest frames go first, frame 0 last, the newest never.
-  while (bytes_ > budgetBytes_ && frames_.size() > 1) {
+  if (from < 0) return 0;
+  std::size_t bytes = 0;
+  for (const LoggedChange& change : changeLog_) bytes += change.frame >= from ? change.bytes : 0;
+  return bytes;
+}
+
+void FrameCache::fitBudget() {
+  // Thinning copies leaves the log as it is (the first frame's copy stays).
+  while (bytes() > budgetBytes_ && dropOneWorld()) {
+  }
+  // No world copy left to drop: the oldest frames go first, the first frame (frame 0, or the one
+  // the log is kept from once frame 0 went) last, the newest never.
+  while (bytes() > budgetBytes_ && frames_.size() > 1) {
     auto oldest = frames_.begin();
-    if (oldest->first == 0 && frames_.size() > 2) oldest = std::next(oldest);
+    if ((oldest->first == 0 || oldest->second.world) && frames_.size() > 2) oldest = std::next(oldest);
     bytes_ -= oldest->second.snapshotBytes + oldest->second.worldBytes;
     frames_.erase(oldest);
   }
 }
 
 bool FrameCache::dropOneWorld() {
-  // Kept copies in frame order; frame 0's and the newest frame's stay.
+  // Kept copies in frame order; the first frame's (frame 0's) and the newest frame's stay.
   std::vector<std::map<long long, Entry>::iterator> kept;
   for (auto it = frames_.begin(); it != frames_.end(); ++it) {
     if (it->second.world) kept.push_back(it);
@@ -71,7 +93,7 @@ bool FrameCache::dropOneWorld() {
   long long smallestGap = 0;
   for (std::size_t i = 0; i < kept.size(); ++i) {
     const long long frame = kept[i]->first;
-    if (frame == 0 || frame == newest) continue;
+    if (frame == frames_.begin()->first || frame == newest) continue;
     // The gap its neighbours would leave between them (the first kept copy's left neighbour is
     // the timeline's start); the smallest gap goes, the older one on a tie.
     const long long before = i > 0 ? kept[i - 1]->first : frames_.begin()->first;
@@ -123,6 +145,7 @@ void FrameCache::invalidateAfter(long long frame) {
 
 void FrameCache::clear() {
   frames_.clear();
+  changeLog_.clear();
   bytes_ = 0;
 }
 

@@ -12,10 +12,17 @@
 // no copy is left to drop do the oldest frames go (frame 0 last). Changing the world while
 // looking at an earlier frame drops every frame after it (invalidateAfter). Plain data, no GL and
 // no ImGui.
+//
+// The budget counts the step worker's change log too (the user's changes a resume replays,
+// step_worker.h): the worker keeps it from the oldest world copy held on, so the cache counts the
+// changes logged in or after its oldest frame keeping a copy. While frame 0 keeps its copy that
+// is the session's changes (a few hundred bytes each): they take the place of frames, the oldest
+// going first, and once frame 0 itself has to go the log shrinks to the frames left.
 #include <cstddef>
 #include <map>
 #include <memory>
 #include <optional>
+#include <vector>
 
 #include "editor/world_snapshot.h"
 
@@ -35,13 +42,21 @@ class FrameCache {
   void invalidateAfter(long long frame);
   void clear();
   void setBudget(std::size_t budgetBytes);  // drops what no longer fits, as add() does
+  // The worker's change log, in order: the frame each change landed in and its bytes. Counted
+  // from the oldest frame keeping a copy on; drops what no longer fits, as add() does.
+  struct LoggedChange {
+    long long frame = 0;
+    std::size_t bytes = 0;
+  };
+  void setChangeLog(std::vector<LoggedChange> log);
 
   bool empty() const { return frames_.empty(); }
   long long firstFrame() const;  // -1 when empty
   long long lastFrame() const;   // -1 when empty
   std::size_t frameCount() const { return frames_.size(); }
   std::size_t worldCount() const;  // frames that keep their world
-  std::size_t bytes() const { return bytes_; }
+  std::size_t bytes() const { return bytes_ + changeLogBytes(); }  // within the budget
+  std::size_t changeLogBytes() const;  // the part of bytes() the change log takes
   std::size_t budgetBytes() const { return budgetBytes_; }
   // The cached frame nearest `frame` (ties: the earlier one); none when empty.
   std::optional<long long> nearest(long long frame) const;
@@ -59,7 +74,8 @@ class FrameCache {
   bool dropOneWorld();  // the evenly thinned one (see above); false when none may go
 
   std::map<long long, Entry> frames_;
-  std::size_t bytes_ = 0;
+  std::size_t bytes_ = 0;  // snapshots and copies
+  std::vector<LoggedChange> changeLog_;
   std::size_t budgetBytes_;
 };
 

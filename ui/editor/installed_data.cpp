@@ -35,4 +35,10 @@ bool isInstalledData(const fs::path& file) {
   return false;
 }
 
+fs::path suggestedSceneCopy(const fs::path& file) {
+  const char* home = std::getenv("HOME");
+  const fs::path root = home != nullptr && *home != '\0' ? fs::path(home) : fs::current_path();
+  return root / "weft" / "scenes" / file.filename();
+}
+
 }  // namespace weft::editor

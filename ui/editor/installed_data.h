@@ -9,4 +9,8 @@ namespace weft::editor {
 // Whether `file` (which need not exist) lies inside one of those folders.
 bool isInstalledData(const std::filesystem::path& file);
 
+// Where the editor suggests saving the user's version of shipped scene `file`:
+// ~/weft/scenes/<its name> ($HOME; the current folder without one).
+std::filesystem::path suggestedSceneCopy(const std::filesystem::path& file);
+
 }  // namespace weft::editor

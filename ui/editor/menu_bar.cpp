@@ -4,18 +4,11 @@
 
 #include <filesystem>
 #include <string>
+#include <utility>
 
 namespace weft::editor {
 
 namespace {
-
-void trySave(EditorSession& session) {
-  try {
-    session.save();
-  } catch (const std::exception& e) {
-    session.status = e.what();
-  }
-}
 
 void drawFileMenu(EditorSession& session, EditorUi& ui) {
   if (!ImGui::BeginMenu("File")) return;
@@ -23,7 +16,7 @@ void drawFileMenu(EditorSession& session, EditorUi& ui) {
     ui.panels.browserOpen = true;
   }
   if (ImGui::MenuItem("Open...")) ui.openDialog = true;
-  if (ImGui::MenuItem("Save", "Ctrl+S")) trySave(session);
+  if (ImGui::MenuItem("Save", "Ctrl+S")) saveScene(session, ui.panels);
   if (ImGui::MenuItem("Save as...")) ui.saveAsDialog = true;
   ImGui::Separator();
   if (ImGui::MenuItem("Save material as preset...")) {
@@ -75,10 +68,15 @@ void drawHelpMenu(EditorUi& ui) {
 }
 
 // A path typed into a small modal; true when the user confirmed it.
-bool pathDialog(const char* title, const char* button, char* path, std::size_t size, bool& open) {
+bool pathDialog(const char* title, const char* button, char* path, std::size_t size, bool& open, const std::string& note) {
   if (open) ImGui::OpenPopup(title);
   bool confirmed = false;
   if (ImGui::BeginPopupModal(title, nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+    if (!note.empty()) {
+      ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + 420.0f);
+      ImGui::TextUnformatted(note.c_str());
+      ImGui::PopTextWrapPos();
+    }
     if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
     ImGui::SetNextItemWidth(420);
     const bool entered = ImGui::InputTextWithHint("##path", "path/to/scene.json", path, size,
@@ -126,10 +124,15 @@ void drawMenuBar(EditorSession& session, EditorUi& ui) {
     drawHelpMenu(ui);
     ImGui::EndMainMenuBar();
   }
-  if (pathDialog("Open scene", "Open", ui.panels.openPath, sizeof ui.panels.openPath, ui.openDialog)) {
+  if (pathDialog("Open scene", "Open", ui.panels.openPath, sizeof ui.panels.openPath, ui.openDialog, "")) {
     ui.panels.openRequest = std::filesystem::absolute(ui.panels.openPath);
   }
-  if (pathDialog("Save scene as", "Save", ui.panels.saveAsPath, sizeof ui.panels.saveAsPath, ui.saveAsDialog)) {
+  if (std::exchange(ui.panels.saveAsRequested, false)) ui.saveAsDialog = true;
+  const std::string shipped = session.savesIntoInstalledData()
+                                  ? session.document().file().filename().string() +
+                                        " ships with Weft and is used by every user: your version goes to another file."
+                                  : std::string();
+  if (pathDialog("Save scene as", "Save", ui.panels.saveAsPath, sizeof ui.panels.saveAsPath, ui.saveAsDialog, shipped)) {
     try {
       session.saveAs(std::filesystem::absolute(ui.panels.saveAsPath));
     } catch (const std::exception& e) {

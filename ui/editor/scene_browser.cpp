@@ -71,7 +71,7 @@ void SceneBrowser::listMaterials() {
     BrowserPreset preset{name, ""};
     for (const fs::path& folder : materialFolders_) {  // the first folder that has it, as scenes find it
       if (!fs::exists(folder / (name + ".json"))) continue;
-      preset.source = presetSource(folder / (name + ".json"));
+      preset.source = listings_.presetSource(folder / (name + ".json"));
       break;
     }
     materials_.push_back(std::move(preset));
@@ -102,8 +102,9 @@ void SceneBrowser::rescan() {
       BrowserScene scene;
       scene.file = entry.path();
       scene.name = name;
-      scene.description = sceneDescription(entry.path());
-      scene.key = ThumbnailCache::keyOf(entry.path()).value_or("");
+      SceneListing listing = listings_.scene(entry.path());
+      scene.description = std::move(listing.description);
+      scene.key = std::move(listing.key);
       listed.emplace(name, std::move(scene));
     }
   }

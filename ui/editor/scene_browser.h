@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "editor/scene_listing_cache.h"
 #include "editor/thumbnail_cache.h"
 #include "scene_renderer.h"
 
@@ -45,7 +46,8 @@ class SceneBrowser {
   SceneBrowser& operator=(const SceneBrowser&) = delete;
 
   // Lists the folders' scenes again, sorted by name, each file once; a scene whose file did not
-  // change keeps its thumbnail. The material presets are listed again too.
+  // change keeps its thumbnail. The material presets are listed again too. Only files that changed
+  // since they were last read are read again (scene_listing_cache.h).
   void rescan();
   const std::vector<BrowserScene>& scenes() const { return scenes_; }
   // The material presets of `folders` (the open scene's search path), listed once per change of
@@ -53,6 +55,7 @@ class SceneBrowser {
   void setMaterialFolders(std::vector<std::filesystem::path> folders);
   const std::vector<BrowserPreset>& materials() const { return materials_; }
   const ThumbnailCache& cache() const { return cache_; }
+  const SceneListingCache& listings() const { return listings_; }
 
   // The next pending thumbnail: read from the cache, or rendered (building the scene's world)
   // and written to the cache. False when none was pending.
@@ -67,6 +70,7 @@ class SceneBrowser {
 
   std::vector<std::filesystem::path> folders_;
   ThumbnailCache cache_;
+  SceneListingCache listings_;
   std::vector<BrowserScene> scenes_;
   std::vector<std::filesystem::path> materialFolders_;
   std::vector<BrowserPreset> materials_;

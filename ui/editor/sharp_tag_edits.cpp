@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
+#include <string>
 
 #include "contact/obstacle.h"
 #include "editor/installed_data.h"
@@ -176,6 +177,10 @@ std::filesystem::path ToolTagEditor::saveBesideScene(EditorSession& session) {
   const ObstacleSpec& spec = session.scene().obstacles.at(static_cast<std::size_t>(obstacle_));
   const std::filesystem::path name = sharpTagsPathFor(spec.shape.meshPath).filename();
   const std::filesystem::path file = session.document().file().parent_path() / name;
+  if (isInstalledData(file)) {  // the scene is shipped too: beside it is Weft's own folder
+    throw std::runtime_error(session.document().file().filename().string() +
+                             " ships with Weft: keep the tags in the scene and save your version with Save as...");
+  }
   document_.saveAs(file);
   session.edit(withSharpTagsFile(session.json(), obstacle_, name.string()), "sharp tags of " + name_ + " beside the scene");
   return file;
@@ -192,7 +197,10 @@ void ToolTagEditor::saveInScene(EditorSession& session) {
 bool ToolTagEditor::savesIntoInstalledData() const { return !inScene_ && isInstalledData(document_.file()); }
 
 void ToolTagEditor::applyToWorld(EditorSession& session) const {
-  session.applyToWorld([obstacle = obstacle_, tags = tags()](World& world) { world.setObstacleSharpTags(obstacle, tags); });
+  SharpTags held = tags();
+  const std::size_t bytes = held.vertices.capacity() * sizeof(int) + held.edges.capacity() * sizeof(held.edges.front());
+  session.applyToWorld(WorldChange{[obstacle = obstacle_, tags = std::move(held)](World& world) { world.setObstacleSharpTags(obstacle, tags); },
+                                   "tool " + std::to_string(obstacle_) + " sharp tags", bytes});  // the whole set
 }
 
 }  // namespace weft::editor

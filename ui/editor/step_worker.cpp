@@ -64,9 +64,15 @@ std::shared_ptr<const World> StepWorker::copyWhenIdle() {
   return copy;
 }
 
-void StepWorker::applyLogged(std::function<void(World&)> change) {
-  change(*world_);
-  changeLog_.emplace_back(world_->stepCount(), std::move(change));
+void StepWorker::applyLogged(WorldChange change) {
+  change.apply(*world_);
+  const long long step = world_->stepCount();
+  if (!change.setter.empty() && !changeLog_.empty() && changeLog_.back().step == step &&
+      changeLog_.back().change.setter == change.setter) {
+    changeLog_.back().change = std::move(change);  // it sets what the one before it set
+  } else {
+    changeLog_.push_back({step, std::move(change)});
+  }
   snapshotStale_ = true;
   rebaseHealth_ = true;
   forgetUnreplayable();
@@ -86,12 +92,25 @@ void StepWorker::forgetUnreplayable() {
   std::erase_if(copies_, [](const auto& copy) { return copy.second.expired(); });
   long long oldest = world_->stepCount();
   for (const auto& [step, copy] : copies_) oldest = std::min(oldest, step);
-  std::erase_if(changeLog_, [&](const auto& change) { return change.first < oldest; });
+  std::erase_if(changeLog_, [&](const Logged& logged) { return logged.step < oldest; });
 }
 
 std::size_t StepWorker::loggedChanges() const {
   std::lock_guard lock(mutex_);
   return changeLog_.size();
+}
+
+std::vector<StepWorker::LoggedBytes> StepWorker::loggedBytes() const {
+  std::lock_guard lock(mutex_);
+  std::vector<LoggedBytes> bytes;
+  bytes.reserve(changeLog_.size());
+  // The entry, the std::function's own heap block (the captures of a lambda past its small
+  // buffer), the setter's name and what the change says its captures hold.
+  constexpr std::size_t kFunctionHeap = 64;
+  for (const Logged& logged : changeLog_) {
+    bytes.push_back({logged.step, sizeof(Logged) + kFunctionHeap + logged.change.setter.capacity() + logged.change.bytes});
+  }
+  return bytes;
 }
 
 void StepWorker::ask(long long steps, long long maxOwed) {
@@ -123,13 +142,13 @@ std::optional<StepResult> StepWorker::takeResult() {
   return result;
 }
 
-void StepWorker::apply(std::function<void(World&)> edit) {
+void StepWorker::apply(WorldChange change) {
   std::lock_guard lock(mutex_);
   if (!uiOwnsWorld()) {
-    queued_.push_back(std::move(edit));
+    queued_.push_back(std::move(change));
     return;
   }
-  applyLogged(std::move(edit));
+  applyLogged(std::move(change));
 }
 
 World& StepWorker::worldWhenIdle() {
@@ -222,7 +241,9 @@ void StepWorker::run() {
       result_.frames.push_back({world.stepCount() / frameSteps_, snapshot_, std::move(frameWorld)});
     }
     if (unhealthy) result_.unhealthy = std::move(unhealthy);
-    --owed_;
+    // Not below 0: a reset (attach) or a resume while this step ran already dropped the owed
+    // steps, this one included; -1 would leave the worker asleep and every wait for idle waiting.
+    owed_ = std::max(owed_ - 1, 0LL);
     if (!finite) {
       result_.nonFiniteAt = world.time();
       owed_ = 0;
@@ -242,17 +263,17 @@ void StepWorker::resume(std::unique_lock<std::mutex>& lock) {
   const long long target = resumeStep_;
   // Changes that landed after the copy was taken: after its step (the copy is taken right after
   // the step, before any change lands there), up to the target.
-  std::vector<std::pair<long long, std::function<void(World&)>>> log = std::move(changeLog_);
+  std::vector<Logged> log = std::move(changeLog_);
   changeLog_.clear();
   running_ = true;
   lock.unlock();
   std::unique_ptr<World> world = from->clone();
   std::size_t next = 0;
-  while (next < log.size() && log[next].first < world->stepCount()) ++next;  // already in the copy
-  std::vector<std::pair<long long, std::function<void(World&)>>> kept(log.begin(), log.begin() + next);
+  while (next < log.size() && log[next].step < world->stepCount()) ++next;  // already in the copy
+  std::vector<Logged> kept(log.begin(), log.begin() + static_cast<std::ptrdiff_t>(next));
   for (;;) {
-    for (; next < log.size() && log[next].first == world->stepCount(); ++next) {
-      log[next].second(*world);
+    for (; next < log.size() && log[next].step == world->stepCount(); ++next) {
+      log[next].change.apply(*world);
       kept.push_back(log[next]);
     }
     if (world->stepCount() >= target || abandonResume_) break;

@@ -23,10 +23,15 @@
 // deterministic), so the world is the frame's exactly; never from t = 0 unless that is nearest.
 // The log is kept from the oldest world copy still held anywhere on (the timeline's, a resume's):
 // a resume starts from such a copy and replays only what landed at or after its step, so what
-// landed before the oldest one can never be replayed again and is dropped. The timeline drops
-// copies as it thins them and frames as it runs out of room, so a long session's log stays as
-// long as the stretch its kept copies cover (with frame 0's copy kept, the whole session: what
-// bounds it then is the budget dropping frame 0).
+// landed before the oldest one can never be replayed again and is dropped. While frame 0's copy
+// is held that is the whole session, so the log is kept small and paid for:
+// - a change that only sets a value (a dragged grab's target, a dragged tool's position) replaces
+//   the same setter's change logged right before it between the same two steps: a drag while
+//   paused logs one change, not one a frame;
+// - every change states the bytes its captures hold, and the timeline counts the log's bytes in
+//   its budget (FrameCache::setChangeLog): past the budget frames go as for snapshots, and the log
+//   shrinks when the oldest copy goes. Memory stays within the budget; every frame kept still
+//   resumes exactly.
 //
 // Determinism: the worker runs World::step exactly as `weft run` does, one after another; only
 // when an edit lands (between which two steps) depends on timing, as it does for any user.
@@ -60,6 +65,16 @@ struct StepResult {
   };
   std::vector<Frame> frames;
   std::optional<long long> rewoundTo;  // a resume finished: the world is back at this step
+};
+
+// A change to the world made by the user (an edit, the grab, a dragged tool, tags, a thrown ball).
+struct WorldChange {
+  std::function<void(World&)> apply;
+  // Non-empty: the change only sets the value this names ("grab target", "tool 2 position"),
+  // whatever was set before; a later change with the same setter, logged right after it between
+  // the same two steps, replaces it in the log (replaying both or the last gives the same world).
+  std::string setter;
+  std::size_t bytes = 0;  // heap bytes its captures hold (a scene, a tag set), for the budget
 };
 
 class StepWorker {
@@ -97,7 +112,8 @@ class StepWorker {
   std::optional<StepResult> takeResult();
 
   // Changes the world between steps (see above). `edit` runs on the UI thread or the worker's.
-  void apply(std::function<void(World&)> edit);
+  void apply(WorldChange change);
+  void apply(std::function<void(World&)> edit) { apply(WorldChange{std::move(edit), {}, 0}); }
   // The world for the UI thread to read or change directly. worldWhenIdle waits for every owed
   // step; worldBetweenSteps only for the step in flight, and holds the worker until release()
   // (a click picks on the world without waiting for a heavy scene's owed steps). The snapshot is
@@ -112,13 +128,19 @@ class StepWorker {
 
   // Changes kept for a resume to replay (see above): bounded by the oldest world copy held.
   std::size_t loggedChanges() const;
+  // The log for the timeline's budget: each change's step (the step it landed after) and bytes.
+  struct LoggedBytes {
+    long long step = 0;
+    std::size_t bytes = 0;
+  };
+  std::vector<LoggedBytes> loggedBytes() const;
 
  private:
   void run();
   void applyQueued(std::unique_lock<std::mutex>& lock);
   bool uiOwnsWorld() const { return !running_ && !resumeFrom_ && (owed_ == 0 || held_); }  // under mutex_
   bool idle() const { return !running_ && !resumeFrom_ && owed_ == 0; }                    // under mutex_
-  void applyLogged(std::function<void(World&)> change);  // under mutex_, the world not stepping
+  void applyLogged(WorldChange change);  // under mutex_, the world not stepping
   void resume(std::unique_lock<std::mutex>& lock);
   void handedOut(const std::shared_ptr<const World>& copy);  // under mutex_
   void forgetUnreplayable();                                 // under mutex_
@@ -130,13 +152,17 @@ class StepWorker {
   long long frameSteps_ = 1;  // steps of an output frame
   std::shared_ptr<const World> resumeFrom_;  // asked for, not yet done
   long long resumeStep_ = 0;                 // ... stepped forward to this step
-  std::vector<std::pair<long long, std::function<void(World&)>>> changeLog_;  // step landed after, change
+  struct Logged {
+    long long step = 0;  // landed after this step
+    WorldChange change;
+  };
+  std::vector<Logged> changeLog_;
   // Every world copy handed out (frames, copyWhenIdle) and the step it was taken at; watched, not
   // owned: the timeline decides how long a copy lives, and with it how far back the log goes.
   std::vector<std::pair<long long, std::weak_ptr<const World>>> copies_;
   long long owed_ = 0;  // steps asked for and not yet taken (the one running included)
   StepResult result_;
-  std::vector<std::function<void(World&)>> queued_;
+  std::vector<WorldChange> queued_;
   std::shared_ptr<const WorldSnapshot> snapshot_;
   bool snapshotStale_ = false;  // the UI thread changed the world since the snapshot was taken
   std::optional<HealthCheck> health_;  // none after its first failure, until attach()

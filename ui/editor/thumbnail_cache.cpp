@@ -46,7 +46,7 @@ std::optional<std::string> bytesOf(const fs::path& file) {
 // of the parsed Scene: a Scene holds a mesh's path, not its triangles, and a hash of every field
 // would go stale the day a field is added. Each file is named (a preset found in another folder
 // is another preset) and its bytes follow, with their length, so no two lists run together.
-std::optional<std::string> ThumbnailCache::keyOf(const fs::path& sceneFile) {
+std::optional<std::string> ThumbnailCache::keyOf(const fs::path& sceneFile, std::vector<fs::path>* loaded) {
   const std::optional<std::string> scene = bytesOf(sceneFile);
   if (!scene) return std::nullopt;
   std::string keyed = std::string(kThumbnailStyle) + '\n' + std::to_string(scene->size()) + '\n' + *scene;
@@ -54,6 +54,7 @@ std::optional<std::string> ThumbnailCache::keyOf(const fs::path& sceneFile) {
     for (const fs::path& file : sceneInputFiles(sceneFile)) {
       const std::optional<std::string> bytes = bytesOf(file);
       keyed += '\n' + file.string() + '\n' + (bytes ? std::to_string(bytes->size()) + '\n' + *bytes : "unreadable");
+      if (loaded != nullptr) loaded->push_back(file);
     }
   } catch (const InputError& e) {  // the scene's own name left out: copies of a file share a key
     keyed += "\ndoes not load: " + (e.file() == sceneFile.string() ? std::string() : e.file()) + ' ' + e.field() + ' ' +

@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace weft::editor {
 
@@ -35,7 +36,9 @@ class ThumbnailCache {
   // The key of a scene file as its bytes and those of the files it loads are now; none when the
   // scene file cannot be read. A scene that does not load is keyed by its bytes and the reader's
   // message, so it is tried again once the file it misses appears.
-  static std::optional<std::string> keyOf(const std::filesystem::path& sceneFile);
+  // `loaded`, when given, receives the files the scene loads (those hashed after it).
+  static std::optional<std::string> keyOf(const std::filesystem::path& sceneFile,
+                                          std::vector<std::filesystem::path>* loaded = nullptr);
   std::filesystem::path pathFor(const std::string& key) const { return folder_ / (key + ".png"); }
 
  private:

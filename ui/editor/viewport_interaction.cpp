@@ -1,6 +1,7 @@
 #include "viewport_interaction.h"
 
 #include <cmath>
+#include <string>
 #include <utility>
 
 #include "contact/obstacle.h"
@@ -114,12 +115,13 @@ bool ViewportInteraction::update(EditorSession& session, const ui::OrbitCamera& 
 
   if (mode_ == Mode::Grab) {
     const Vec3 target = onDragPlane(camera, anchor_, origin, dir);
-    session.applyToWorld([target](World& world) { world.moveGrab(target); });
+    session.applyToWorld(WorldChange{[target](World& world) { world.moveGrab(target); }, "grab target", 0});
     return true;
   }
   if (mode_ == Mode::DragTool) {
     const Vec3 position = onDragPlane(camera, anchor_, origin, dir) + toolOffset_;
-    session.applyToWorld([tool = tool_, position](World& world) { world.setKinematicOverride(tool, position); });
+    session.applyToWorld(WorldChange{[tool = tool_, position](World& world) { world.setKinematicOverride(tool, position); },
+                                     "tool " + std::to_string(tool_) + " position", 0});
     return true;
   }
   return false;

@@ -1,9 +1,14 @@
 // What every panel's fields share: where a widget was drawn (for tests), the number field, and
 // the message of a refused edit shown under its field.
 #include <cmath>
+#include <cstdio>
+#include <exception>
+#include <filesystem>
 #include <string>
 
 #include "panels.h"
+
+#include "editor/installed_data.h"
 
 namespace weft::editor {
 
@@ -12,6 +17,21 @@ void recordWidget(PanelState& state, const std::string& id) {
   const ImVec2 lo = ImGui::GetItemRectMin();
   const ImVec2 hi = ImGui::GetItemRectMax();
   state.probe->rects[id] = ImVec4(lo.x, lo.y, hi.x, hi.y);
+}
+
+void saveScene(EditorSession& session, PanelState& state) {
+  if (session.savesIntoInstalledData()) {
+    const std::filesystem::path copy = suggestedSceneCopy(session.document().file());
+    std::snprintf(state.saveAsPath, sizeof state.saveAsPath, "%s", copy.string().c_str());
+    state.saveAsRequested = true;
+    session.status = session.document().file().filename().string() + " ships with Weft: choose where to save your version";
+    return;
+  }
+  try {
+    session.save();
+  } catch (const std::exception& e) {
+    session.status = e.what();
+  }
 }
 
 bool numberField(const char* label, double& value, const char* format, float width) {

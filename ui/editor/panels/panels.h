@@ -51,7 +51,12 @@ struct PanelState {
   std::filesystem::path openRequest;  // a scene the user chose to open (the editor asks about unsaved edits first)
   SceneBrowser* browser = nullptr;    // the browser's scenes and thumbnails (owned by the app; none: no browser)
   bool browserOpen = false;           // File > Browse scenes and presets
+  bool saveAsRequested = false;       // Save on a shipped scene: the "Save scene as" dialog opens
 };
+
+// Save (the Scene panel's button, File > Save, Ctrl+S). A scene shipped with Weft is not written
+// over: the "Save scene as" dialog opens instead, a copy in ~/weft/scenes suggested.
+void saveScene(EditorSession& session, PanelState& state);
 
 // Records the last drawn item under `id` when a probe is attached.
 void recordWidget(PanelState& state, const std::string& id);

@@ -26,8 +26,14 @@ void drawTimeline(EditorSession& session, PanelState& state) {
   recordWidget(state, "play/timeline");
   constexpr double kMiB = 1024.0 * 1024.0;
   // Every frame is shown from the cache; an edit resumes from the nearest one keeping its world.
-  ImGui::TextDisabled("cache: %zu frames (%zu to resume from), %.1f of %.0f MB", frames.frameCount(),
-                      frames.worldCount(), frames.bytes() / kMiB, frames.budgetBytes() / kMiB);
+  // The changes a resume replays count too (step_worker.h).
+  // Wrapped: the panel is narrow, and the budget is the part that matters.
+  ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+  ImGui::TextWrapped("cache: %zu frames (%zu to resume from), %.1f of %.0f MB (changes logged: %.0f kB)",
+                     frames.frameCount(), frames.worldCount(), frames.bytes() / kMiB, frames.budgetBytes() / kMiB,
+                     frames.changeLogBytes() / 1024.0);
+  ImGui::PopStyleColor();
+  recordWidget(state, "play/cache");
   if (const std::optional<long long> shown = session.shownFrame()) {
     if (ImGui::SmallButton("Live")) session.showLive();
     recordWidget(state, "play/live");

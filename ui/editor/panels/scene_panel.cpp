@@ -126,13 +126,7 @@ void drawScenePanel(EditorSession& session, PanelState& state) {
     return;
   }
   ImGui::Text("%s%s", session.document().file().filename().string().c_str(), session.dirty() ? " *" : "");
-  if (ImGui::Button("Save")) {
-    try {
-      session.save();
-    } catch (const std::exception& e) {
-      session.status = e.what();
-    }
-  }
+  if (ImGui::Button("Save")) saveScene(session, state);
   recordWidget(state, "scene/save");
   ImGui::SameLine();
   ImGui::BeginDisabled(!session.document().history().canUndo());

@@ -38,10 +38,18 @@ void drawTagsDialog(EditorSession& session, PanelState& state) {
   ImGui::TextWrapped("%s is a tool shipped with Weft; its tags file %s is used by every scene with this tool.",
                      session.scene().obstacles[static_cast<std::size_t>(state.tool->obstacle())].name.c_str(),
                      shipped.string().c_str());
+  // A scene shipped with Weft lives among Weft's own files: nothing goes beside it.
+  const bool sceneShipped = session.savesIntoInstalledData();
+  if (sceneShipped) {
+    ImGui::TextWrapped("This scene ships with Weft too: keep the tags in it, then save your version of the scene with "
+                       "Save as.");
+  }
+  ImGui::BeginDisabled(sceneShipped);
   if (ImGui::Button("Save beside this scene")) {
     saveTags(session, *state.tool, TagsGoTo::BesideScene);
     state.tagsDialog = false;
   }
+  ImGui::EndDisabled();
   recordWidget(state, "tools/savebesidescene");
   ImGui::SameLine();
   if (ImGui::Button("Keep them in this scene")) {
