@@ -184,12 +184,11 @@ double separationStrengthBound(const StressFan& fan) {
 
 namespace {
 
-// The largest |x + M (g(middle + Delta) - g(middle))| over |Delta| <= halfWidth (see the header).
-double largestAlongPiece(const Vec2& x, const Mat2& m, double middle, double halfWidth) {
-  const Vec2 r(std::cos(middle), std::sin(middle));
-  const Vec2 g(r.y(), -r.x());
-  const Vec2 turn = std::sin(halfWidth) * (m * r);
-  return std::max((x + turn).norm(), (x - turn).norm()) + (1.0 - std::cos(halfWidth)) * (m * g).norm();
+// The largest |x + M (g(middle + Delta) - g(middle))| over |Delta| <= halfWidth (see the header),
+// with r the middle line's direction and g = g(middle); sin and cos of halfWidth given.
+double largestAlongPiece(const Vec2& x, const Mat2& m, const Vec2& r, const Vec2& g, double sinHalf, double cosHalf) {
+  const Vec2 turn = sinHalf * (m * r);
+  return std::max((x + turn).norm(), (x - turn).norm()) + (1.0 - cosHalf) * (m * g).norm();
 }
 
 // The sector holding the direction `angle`, or -1 (a gap left by rounding).
@@ -212,7 +211,11 @@ LinePieceBound separationOverPiece(const StressFan& fan, double middle, double h
   // A sector edge inside the piece: for a line, an edge at either end of it (so modulo pi).
   const double period = fan.closed ? std::numbers::pi : kTwoPi;
   for (const FanSector& sector : fan.sectors) {
-    const double offset = std::remainder(sector.start - middle, period);
+    // The edge's offset from the middle, within half a period (a few additions: the angles met
+    // here lie within a few turns of each other, and std::remainder was much of a piece's cost).
+    double offset = sector.start - middle;
+    while (offset > 0.5 * period) offset -= period;
+    while (offset < -0.5 * period) offset += period;
     if (std::abs(offset) < halfWidth * (1.0 - 1e-12)) {
       piece.edge = middle + offset;
       return piece;
@@ -221,18 +224,16 @@ LinePieceBound separationOverPiece(const StressFan& fan, double middle, double h
   const int at = sectorAt(fan, middle);
   const int across = fan.closed ? sectorAt(fan, middle + std::numbers::pi) : at;
   if (at < 0 || across < 0) return piece;
-  double a = 0.0, b = 0.0;  // the largest |q1| and |q2| over the piece
-  if (fan.closed) {
-    // q1' = -(sigma(theta) + sigma(theta + pi)) r(theta), and q2 = total - q1 turns the other way.
-    const Mat2 m = -(fan.sectors[at].stress + fan.sectors[across].stress);
-    a = largestAlongPiece(sides.q1, m, middle, halfWidth);
-    b = largestAlongPiece(sides.q2, -m, middle, halfWidth);
-  } else {
-    // A ray: q1' = sigma(theta) r(theta), q2' = -q1'.
-    const Mat2 m = fan.sectors[at].stress;
-    a = largestAlongPiece(sides.q1, m, middle, halfWidth);
-    b = largestAlongPiece(sides.q2, -m, middle, halfWidth);
-  }
+  const Vec2 r(std::cos(middle), std::sin(middle));
+  const Vec2 g(r.y(), -r.x());
+  const double sinHalf = std::sin(halfWidth), cosHalf = std::cos(halfWidth);
+  // q1' = -(sigma(theta) + sigma(theta + pi)) r(theta) for a line, and q2 = total - q1 turns the
+  // other way; for a ray q1' = sigma(theta) r(theta), q2' = -q1'.
+  const Mat2 m = fan.closed ? Mat2(-(fan.sectors[at].stress + fan.sectors[across].stress))
+                            : Mat2(fan.sectors[at].stress);
+  // The largest |q1| and |q2| over the piece.
+  const double a = largestAlongPiece(sides.q1, m, r, g, sinHalf, cosHalf);
+  const double b = largestAlongPiece(sides.q2, -m, r, g, sinHalf, cosHalf);
   // zeta <= min(|q1|, |q2|) (halved at an interior vertex); the margin covers rounding.
   const double explicitBound = (fan.closed ? 0.5 : 1.0) * std::min(a, b) * (1.0 + 1e-9);
   piece.bound = std::min(piece.bound, explicitBound);
