@@ -90,16 +90,34 @@ Mat2 NonlocalStress::averageAt(const std::vector<Mat2>& local, int t) const {
   if (scale_[t] == 0.0) return local[t];
   // The three distinct components in plain doubles (`packed_`, 24 bytes a triangle where a Mat2
   // holds 32): this loop is most of the stage's averaging, over about 100 neighbours a triangle.
-  double xx = 0.0, yy = 0.0, xy = 0.0;
-  for (const Neighbour& n : neighbours_[t]) {
-    const PackedStress& s = packed_[n.triangle];
-    const double w = n.weight;
-    xx += w * s.xx;
-    yy += w * s.yy;
-    xy += w * s.xy;
+  // Four partial sums per component, each over every fourth neighbour: one running sum would
+  // wait on each addition before the next (four cycles a neighbour); four independent ones let
+  // the additions overlap. The order is fixed, so a cached average still equals a fresh one.
+  const std::vector<Neighbour>& list = neighbours_[t];
+  const std::size_t count = list.size();
+  double xx[4] = {0.0, 0.0, 0.0, 0.0}, yy[4] = {0.0, 0.0, 0.0, 0.0}, xy[4] = {0.0, 0.0, 0.0, 0.0};
+  std::size_t i = 0;
+  for (; i + 4 <= count; i += 4) {
+    for (int k = 0; k < 4; ++k) {
+      const PackedStress& s = packed_[list[i + k].triangle];
+      const double w = list[i + k].weight;
+      xx[k] += w * s.xx;
+      yy[k] += w * s.yy;
+      xy[k] += w * s.xy;
+    }
   }
+  for (int k = 0; i < count; ++i, ++k) {
+    const PackedStress& s = packed_[list[i].triangle];
+    const double w = list[i].weight;
+    xx[k] += w * s.xx;
+    yy[k] += w * s.yy;
+    xy[k] += w * s.xy;
+  }
+  const double sumXX = (xx[0] + xx[1]) + (xx[2] + xx[3]);
+  const double sumYY = (yy[0] + yy[1]) + (yy[2] + yy[3]);
+  const double sumXY = (xy[0] + xy[1]) + (xy[2] + xy[3]);
   Mat2 average;
-  average << scale_[t] * xx, scale_[t] * xy, scale_[t] * xy, scale_[t] * yy;
+  average << scale_[t] * sumXX, scale_[t] * sumXY, scale_[t] * sumXY, scale_[t] * sumYY;
   return average;
 }
 

@@ -21,25 +21,35 @@ Mat2 tensilePart(const Mat2& stress) {
   return larger * (stress - smaller * Mat2::Identity()) / (2.0 * radius);
 }
 
-Mat2 stressInMaterialFrame(const Vec3& stressUV, double weftAngleRad) {
+Mat2 weftToMaterial(double weftAngleRad) {
   // The weft/warp axes are the material axes turned by the weft angle: R's columns are U and V in
-  // material coordinates, and a tensor transforms as R S R^T.
+  // material coordinates.
   const double c = std::cos(weftAngleRad), s = std::sin(weftAngleRad);
   Mat2 R;
   R << c, -s, s, c;
+  return R;
+}
+
+Mat2 stressInMaterialFrame(const Vec3& stressUV, const Mat2& weftToMaterial) {
+  // A tensor transforms as R S R^T.
   Mat2 S;
   S << stressUV[0], stressUV[2], stressUV[2], stressUV[1];
-  return R * S * R.transpose();
+  return weftToMaterial * S * weftToMaterial.transpose();
+}
+
+Mat2 stressInMaterialFrame(const Vec3& stressUV, double weftAngleRad) {
+  return stressInMaterialFrame(stressUV, weftToMaterial(weftAngleRad));
 }
 
 namespace {
 
-Mat2 tensileStressOf(const Cloth& cloth, const PreparedElasticity& law, int t, MembraneContribution& contribution) {
+Mat2 tensileStressOf(const Cloth& cloth, const PreparedElasticity& law, const Mat2& rotation, int t,
+                     MembraneContribution& contribution) {
   const ClothMesh& mesh = cloth.mesh;
   const MembraneElement& element = cloth.membranes[t];
   evaluateMembrane(element, law, mesh.x[element.v[0]], mesh.x[element.v[1]], mesh.x[element.v[2]], HessianMode::None,
                    contribution);
-  const Mat2 stress = stressInMaterialFrame(contribution.stress, cloth.weftAngleRad);
+  const Mat2 stress = stressInMaterialFrame(contribution.stress, rotation);
   // A non-finite stress (a blown-up step) must not tear: it is treated as no stress.
   return stress.allFinite() ? tensilePart(stress) : Mat2::Zero();
 }
@@ -49,15 +59,19 @@ Mat2 tensileStressOf(const Cloth& cloth, const PreparedElasticity& law, int t, M
 void tensileStresses(const Cloth& cloth, std::vector<Mat2>& outStress) {
   const PreparedElasticity law = prepareElasticity(cloth.material.elasticity);
   outStress.resize(cloth.mesh.tris.size());
+  const Mat2 rotation = weftToMaterial(cloth.weftAngleRad);  // once: a sine and cosine per triangle cost a tenth
   MembraneContribution contribution;
-  for (int t = 0; t < cloth.mesh.triangleCount(); ++t) outStress[t] = tensileStressOf(cloth, law, t, contribution);
+  for (int t = 0; t < cloth.mesh.triangleCount(); ++t) {
+    outStress[t] = tensileStressOf(cloth, law, rotation, t, contribution);
+  }
 }
 
 void tensileStresses(const Cloth& cloth, const std::vector<int>& triangles, std::vector<Mat2>& ioStress) {
   const PreparedElasticity law = prepareElasticity(cloth.material.elasticity);
   ioStress.resize(cloth.mesh.tris.size(), Mat2::Zero());
+  const Mat2 rotation = weftToMaterial(cloth.weftAngleRad);
   MembraneContribution contribution;
-  for (int t : triangles) ioStress[t] = tensileStressOf(cloth, law, t, contribution);
+  for (int t : triangles) ioStress[t] = tensileStressOf(cloth, law, rotation, t, contribution);
 }
 
 }  // namespace weft

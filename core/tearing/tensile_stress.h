@@ -18,6 +18,9 @@ Mat2 tensilePart(const Mat2& stress);
 // A membrane stress (s_uu, s_vv, s_uv) in the weft/warp frame (U at weftAngleRad from material x),
 // as a 2x2 tensor in the material frame (x, y of Triangle::rest).
 Mat2 stressInMaterialFrame(const Vec3& stressUV, double weftAngleRad);
+// The rotation from the weft/warp frame to the material frame, and the same turn with it given.
+Mat2 weftToMaterial(double weftAngleRad);
+Mat2 stressInMaterialFrame(const Vec3& stressUV, const Mat2& weftToMaterial);
 
 // sigma+ of every triangle of the cloth at its current positions (N/m), in the material frame.
 void tensileStresses(const Cloth& cloth, std::vector<Mat2>& outStress);

@@ -153,10 +153,22 @@ TEST(Tearing, ASimulationTurnedAndMovedAsAWholeTearsTheSameLines) {
   const std::vector<TearRecord> b = tearLog(turned, 6, 400);
   ASSERT_GE(a.size(), 6u) << "the pull should tear the sheet";
   ASSERT_EQ(a.size(), b.size());
+  // Compared step by step as sets in material space: which of a straight crack's two tips runs
+  // first within a step is decided by rounding (they read 2.692740352 and 2.692740340), and the
+  // turn changes the rounding.
+  const auto byPlace = [](std::vector<TearRecord> records) {
+    std::stable_sort(records.begin(), records.end(), [](const TearRecord& p, const TearRecord& q) {
+      if (std::abs(p.time - q.time) > 1e-9) return p.time < q.time;
+      if (std::abs(p.restPosition.x() - q.restPosition.x()) > 1e-9) return p.restPosition.x() < q.restPosition.x();
+      return p.restPosition.y() < q.restPosition.y();
+    });
+    return records;
+  };
+  const std::vector<TearRecord> placedA = byPlace(a), placedB = byPlace(b);
   for (std::size_t k = 0; k < a.size(); ++k) {
-    EXPECT_EQ(a[k].vertex, b[k].vertex) << k;
-    EXPECT_NEAR(axialDifferenceDeg(a[k].angleDeg, b[k].angleDeg), 0.0, 1e-3) << k;
-    EXPECT_NEAR(a[k].time, b[k].time, 1e-12) << k;
+    EXPECT_NEAR((placedA[k].restPosition - placedB[k].restPosition).norm(), 0.0, 1e-9) << k;
+    EXPECT_NEAR(axialDifferenceDeg(placedA[k].angleDeg, placedB[k].angleDeg), 0.0, 1e-3) << k;
+    EXPECT_NEAR(placedA[k].time, placedB[k].time, 1e-12) << k;
   }
 }
 
