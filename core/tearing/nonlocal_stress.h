@@ -30,7 +30,10 @@
 // stress is kept (it is below the threshold too). The neighbourhoods and their weights depend on
 // the mesh alone, not on the stress, so they are kept from step to step (a walk per triangle cost
 // 14 ms a step at 64^2, ~100 triangles per disc) and rebuilt around each tear by `patch`: a step
-// costs one pass over the triangles plus, where the cloth is hot, one pass over their lists.
+// costs one pass over the triangles plus, where the cloth is hot, one pass over their lists. A
+// list holds at most 256 triangles: on a mesh much finer than the radius the disc's outer part is
+// read at a coarser spacing (nonlocal_stress.cpp, kMaxNeighbours), so memory and time per triangle
+// stay bounded at any resolution (the walk that builds a list still visits the whole disc).
 #include <cstddef>
 #include <vector>
 
@@ -74,6 +77,8 @@ class NonlocalStress {
   void gather(const ClothMesh& mesh, int t, double reach);
   // Triangle t's neighbourhood at `radius_` (its gather, lips left out) into `neighbours_[t]`.
   void buildNeighbours(const ClothMesh& mesh, int t);
+  // A neighbourhood of triangle t longer than the cap, read at fewer points (nonlocal_stress.cpp).
+  void thin(int t, std::vector<Neighbour>& list) const;
   // `local`'s distinct components into packed_, which averageAt reads.
   void pack(const std::vector<Mat2>& local);
   Mat2 averageAt(const std::vector<Mat2>& local, int t) const;
