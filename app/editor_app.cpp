@@ -22,6 +22,7 @@
 #include "editor/editor_workspace.h"
 #include "editor/headless_recorder.h"
 #include "editor/input_queue.h"
+#include "editor/menu_bar.h"
 #include "editor/scene_browser.h"
 #include "editor/viewport_interaction.h"
 #include "glfw_window.h"
@@ -84,8 +85,7 @@ ShortcutResult applyShortcuts(editor::EditorSession& session, editor::PanelState
   if (ImGui::IsKeyPressed(GLFW_KEY_LEFT)) session.showFrame(std::max(shownFrame - 1, 0LL));
   if (ImGui::IsKeyPressed(GLFW_KEY_RIGHT)) session.showFrame(shownFrame + 1);
   if (ImGui::IsKeyPressed(GLFW_KEY_END, false)) session.showLive();
-  if (io.KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_Z)) session.undo();
-  if (io.KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_Y)) session.redo();
+  editor::applyEditShortcuts(session, panels);  // Ctrl+Z, Ctrl+Y, Ctrl+Shift+Z
   if (io.KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_S)) editor::saveScene(session, panels);  // a shipped scene: Save as
   for (ui::Key key : input.keysPressed) {
     switch (key) {

@@ -5,9 +5,9 @@
 //
 // Mouse (outside the panels): left drag orbits, right or middle drag pans, the wheel zooms. Keys
 // (outside text fields): Space play/pause, N step, R reset (the camera stays), F frame the selected
-// obstacle or else the scene,
-// Ctrl+Z undo, Ctrl+Y redo, Ctrl+S save, Esc closes an open popup, else quits (asking first when
-// there are unsaved edits). Scenes open paused at t = 0.
+// obstacle or else the scene, Ctrl+Z undo (scene edits and sharp tags in one history), Ctrl+Y or
+// Ctrl+Shift+Z redo, Ctrl+S save, Esc closes an open popup, else quits (asking first when there
+// are unsaved edits). Scenes open paused at t = 0.
 #include <filesystem>
 #include <optional>
 #include <string>

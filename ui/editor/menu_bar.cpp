@@ -6,6 +6,8 @@
 #include <string>
 #include <utility>
 
+#include "editor/shared_undo.h"
+
 namespace weft::editor {
 
 namespace {
@@ -32,10 +34,15 @@ void drawEditMenu(EditorSession& session, PanelState& state) {
   const bool open = ImGui::BeginMenu("Edit");
   recordWidget(state, "menu/edit");
   if (!open) return;
-  const EditHistory& history = session.document().history();
-  if (ImGui::MenuItem(("Undo " + history.undoLabel()).c_str(), "Ctrl+Z", false, history.canUndo())) session.undo();
+  ToolTagEditor* tool = state.tool ? &*state.tool : nullptr;
+  if (ImGui::MenuItem(("Undo " + latestUndoLabel(session, tool)).c_str(), "Ctrl+Z", false, canUndoLatest(session, tool))) {
+    undoLatest(session, tool);
+  }
   recordWidget(state, "menu/undo");
-  if (ImGui::MenuItem(("Redo " + history.redoLabel()).c_str(), "Ctrl+Y", false, history.canRedo())) session.redo();
+  if (ImGui::MenuItem(("Redo " + latestRedoLabel(session, tool)).c_str(), "Ctrl+Y", false, canRedoLatest(session, tool))) {
+    redoLatest(session, tool);
+  }
+  recordWidget(state, "menu/redo");
   ImGui::EndMenu();
 }
 
@@ -104,7 +111,7 @@ void drawHelp(EditorUi& ui) {
       "  B                        throw a ball at the cursor\n"
       "Keys (outside text fields):\n"
       "  Space play / pause    N step    R reset to t = 0 (the camera stays)    F frame the scene\n"
-      "  Ctrl+Z undo    Ctrl+Y redo    Ctrl+S save\n"
+      "  Ctrl+Z undo (scene edits and sharp tags alike)    Ctrl+Y or Ctrl+Shift+Z redo    Ctrl+S save\n"
       "  Esc closes an open popup, else quits (asking first about unsaved edits)");
   if (ImGui::Button("Close") || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false)) {
     ui.helpOpen = false;
@@ -114,6 +121,21 @@ void drawHelp(EditorUi& ui) {
 }
 
 }  // namespace
+
+void applyEditShortcuts(EditorSession& session, PanelState& state) {
+  const ImGuiIO& io = ImGui::GetIO();
+  if (!io.KeyCtrl) return;
+  ToolTagEditor* tool = state.tool ? &*state.tool : nullptr;
+  // Shift+Z is checked before Z alone: with Shift held, Ctrl+Z redoes (as in most editors).
+  if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Z))) {
+    if (io.KeyShift) {
+      redoLatest(session, tool);
+    } else {
+      undoLatest(session, tool);
+    }
+  }
+  if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Y))) redoLatest(session, tool);
+}
 
 void drawMenuBar(EditorSession& session, EditorUi& ui) {
   if (ImGui::BeginMainMenuBar()) {
