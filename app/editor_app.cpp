@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <iostream>
 #include <memory>
+#include <string>
 #include <utility>
 
 #include "command.h"
@@ -153,6 +154,15 @@ std::unique_ptr<editor::EditorSession> openSession(const EditorOptions& options)
   return session;
 }
 
+// What the window shows, for --print-changes: the step on screen and whether it is the live world
+// or a frame of the timeline's cache.
+std::string shownState(const editor::EditorSession& session) {
+  const long long step = session.view()->stepCount;
+  const long long frame = step / session.stepsPerFrame();
+  return "step " + std::to_string(step) + " (frame " + std::to_string(frame) + ", " +
+         (session.shownFrame() ? "cached" : "live") + ")";
+}
+
 }  // namespace
 
 int runEditor(const EditorOptions& options) {
@@ -220,6 +230,8 @@ int runEditor(const EditorOptions& options) {
   Clock::time_point lastFrame = Clock::now();
   int displayed = 0;
   const Clock::time_point started = Clock::now();
+  std::string printedState;   // --print-changes: what was last said to be on screen
+  std::string printedStatus;
   while (ui.quit != editor::QuitPrompt::Confirmed) {
     editor::EditorSession* session = &workspace.session();
     window.pollEvents();
@@ -274,6 +286,15 @@ int runEditor(const EditorOptions& options) {
       // Once the window shows the scene and its panels, settled: a click lands on a widget from
       // here (the window tests wait for this line before they click).
       std::printf("weft edit: %s (%s)\n", options.scene.string().c_str(), window.glRenderer().c_str());
+      std::fflush(stdout);
+    }
+    if (options.printChanges && displayed >= kFramesToSettle) {
+      // Said after the swap: the frame showing it has been handed to the display.
+      const std::string state = shownState(*session);
+      if (state != printedState) std::printf("weft edit: shows %s\n", state.c_str());
+      if (session->status != printedStatus) std::printf("weft edit: status: %s\n", session->status.c_str());
+      printedState = state;
+      printedStatus = session->status;
       std::fflush(stdout);
     }
     if (Clock::now() - lastAutosave > kAutosaveEvery) {

@@ -23,6 +23,10 @@ struct EditorOptions {
   std::optional<int> frames;           // quit after this many displayed frames (tests, scripts)
   std::filesystem::path screenshot;    // when set: the last displayed frame as PNG, written on quit
   bool play = false;                   // start playing (scenes open paused at t = 0 otherwise)
+  // After each swap that put a new state on screen, print what it shows: "weft edit: shows step S
+  // (frame F, live|cached)" and "weft edit: status: MESSAGE". Scripts and the window tests wait on
+  // these lines instead of guessing how long a step or a frame takes.
+  bool printChanges = false;
   std::filesystem::path autosaveDir = editor::Autosave::defaultDirectory();
 };
 
