@@ -2,10 +2,12 @@
 
 #include <imgui.h>
 
+#include <cstdio>
 #include <filesystem>
 #include <string>
 #include <utility>
 
+#include "editor/installed_data.h"
 #include "editor/shared_undo.h"
 
 namespace weft::editor {
@@ -13,13 +15,26 @@ namespace weft::editor {
 namespace {
 
 void drawFileMenu(EditorSession& session, EditorUi& ui) {
-  if (!ImGui::BeginMenu("File")) return;
+  const bool open = ImGui::BeginMenu("File");
+  recordWidget(ui.panels, "menu/file");
+  if (!open) return;
   if (ImGui::MenuItem("Browse scenes and presets...", nullptr, false, ui.panels.browser != nullptr)) {
     ui.panels.browserOpen = true;
   }
   if (ImGui::MenuItem("Open...")) ui.openDialog = true;
   if (ImGui::MenuItem("Save", "Ctrl+S")) saveScene(session, ui.panels);
-  if (ImGui::MenuItem("Save as...")) ui.saveAsDialog = true;
+  if (ImGui::MenuItem("Save as...")) {
+    // The dialog starts where the scene is, under its name (as a desktop Save As does): the
+    // artist edits the name or the folder instead of typing a whole path from nothing. A shipped
+    // scene suggests the user's own copy instead, as Save does.
+    if (ui.panels.saveAsPath[0] == '\0' && !session.document().file().empty()) {
+      const std::filesystem::path start = session.savesIntoInstalledData() ? suggestedSceneCopy(session.document().file())
+                                                                           : session.document().file();
+      std::snprintf(ui.panels.saveAsPath, sizeof ui.panels.saveAsPath, "%s", start.string().c_str());
+    }
+    ui.saveAsDialog = true;
+  }
+  recordWidget(ui.panels, "menu/saveas");
   ImGui::Separator();
   if (ImGui::MenuItem("Save material as preset...")) {
     ui.panels.presetFolder[0] = '\0';  // the material panel fills in the suggested folder
