@@ -31,6 +31,7 @@ struct EditOptions {
   std::optional<int> frames;           // window: displayed frames; headless: simulated frames
   fs::path screenshot;                 // the last frame as PNG
   bool play = false;                   // start playing instead of paused at t = 0
+  bool printChanges = false;           // window: a line for every change of what is shown
 };
 
 // The highest-numbered frame_NNNN.png of a headless run, or empty when there is none.
@@ -82,6 +83,7 @@ int edit(const EditOptions& options) {
     editor.frames = options.frames;
     editor.screenshot = options.screenshot;
     editor.play = options.play;
+    editor.printChanges = options.printChanges;
     return runEditor(editor);
   } catch (const ui::WindowUnavailable& e) {
     std::cerr << "weft edit: cannot open a window (" << e.what() << "); running headless instead\n";
@@ -117,6 +119,8 @@ Command addEditCommand(CLI::App& app) {
   cli->add_option("--screenshot", parsed->screenshot, "Write the last displayed frame to FILE as PNG")
       ->type_name("FILE");
   cli->add_flag("--play", parsed->options.play, "Start playing (scenes open paused at t = 0)");
+  cli->add_flag("--print-changes", parsed->options.printChanges,
+                "Print a line once a frame showing another step or status message is on screen (for scripts and tests)");
   return {cli, [parsed] {
             EditOptions given = parsed->options;
             if (parsed->framesOption->count() > 0) given.frames = parsed->frames;

@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <iostream>
 #include <memory>
+#include <string>
 #include <utility>
 
 #include "command.h"
@@ -22,6 +23,7 @@
 #include "editor/editor_workspace.h"
 #include "editor/headless_recorder.h"
 #include "editor/input_queue.h"
+#include "editor/menu_bar.h"
 #include "editor/scene_browser.h"
 #include "editor/viewport_interaction.h"
 #include "glfw_window.h"
@@ -84,8 +86,7 @@ ShortcutResult applyShortcuts(editor::EditorSession& session, editor::PanelState
   if (ImGui::IsKeyPressed(GLFW_KEY_LEFT)) session.showFrame(std::max(shownFrame - 1, 0LL));
   if (ImGui::IsKeyPressed(GLFW_KEY_RIGHT)) session.showFrame(shownFrame + 1);
   if (ImGui::IsKeyPressed(GLFW_KEY_END, false)) session.showLive();
-  if (io.KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_Z)) session.undo();
-  if (io.KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_Y)) session.redo();
+  editor::applyEditShortcuts(session, panels);  // Ctrl+Z, Ctrl+Y, Ctrl+Shift+Z
   if (io.KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_S)) editor::saveScene(session, panels);  // a shipped scene: Save as
   for (ui::Key key : input.keysPressed) {
     switch (key) {
@@ -151,6 +152,15 @@ std::unique_ptr<editor::EditorSession> openSession(const EditorOptions& options)
     session->reset();
   }
   return session;
+}
+
+// What the window shows, for --print-changes: the step on screen and whether it is the live world
+// or a frame of the timeline's cache.
+std::string shownState(const editor::EditorSession& session) {
+  const long long step = session.view()->stepCount;
+  const long long frame = step / session.stepsPerFrame();
+  return "step " + std::to_string(step) + " (frame " + std::to_string(frame) + ", " +
+         (session.shownFrame() ? "cached" : "live") + ")";
 }
 
 }  // namespace
@@ -220,6 +230,8 @@ int runEditor(const EditorOptions& options) {
   Clock::time_point lastFrame = Clock::now();
   int displayed = 0;
   const Clock::time_point started = Clock::now();
+  std::string printedState;   // --print-changes: what was last said to be on screen
+  std::string printedStatus;
   while (ui.quit != editor::QuitPrompt::Confirmed) {
     editor::EditorSession* session = &workspace.session();
     window.pollEvents();
@@ -274,6 +286,15 @@ int runEditor(const EditorOptions& options) {
       // Once the window shows the scene and its panels, settled: a click lands on a widget from
       // here (the window tests wait for this line before they click).
       std::printf("weft edit: %s (%s)\n", options.scene.string().c_str(), window.glRenderer().c_str());
+      std::fflush(stdout);
+    }
+    if (options.printChanges && displayed >= kFramesToSettle) {
+      // Said after the swap: the frame showing it has been handed to the display.
+      const std::string state = shownState(*session);
+      if (state != printedState) std::printf("weft edit: shows %s\n", state.c_str());
+      if (session->status != printedStatus) std::printf("weft edit: status: %s\n", session->status.c_str());
+      printedState = state;
+      printedStatus = session->status;
       std::fflush(stdout);
     }
     if (Clock::now() - lastAutosave > kAutosaveEvery) {

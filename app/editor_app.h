@@ -5,9 +5,9 @@
 //
 // Mouse (outside the panels): left drag orbits, right or middle drag pans, the wheel zooms. Keys
 // (outside text fields): Space play/pause, N step, R reset (the camera stays), F frame the selected
-// obstacle or else the scene,
-// Ctrl+Z undo, Ctrl+Y redo, Ctrl+S save, Esc closes an open popup, else quits (asking first when
-// there are unsaved edits). Scenes open paused at t = 0.
+// obstacle or else the scene, Ctrl+Z undo (scene edits and sharp tags in one history), Ctrl+Y or
+// Ctrl+Shift+Z redo, Ctrl+S save, Esc closes an open popup, else quits (asking first when there
+// are unsaved edits). Scenes open paused at t = 0.
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -23,6 +23,10 @@ struct EditorOptions {
   std::optional<int> frames;           // quit after this many displayed frames (tests, scripts)
   std::filesystem::path screenshot;    // when set: the last displayed frame as PNG, written on quit
   bool play = false;                   // start playing (scenes open paused at t = 0 otherwise)
+  // After each swap that put a new state on screen, print what it shows: "weft edit: shows step S
+  // (frame F, live|cached)" and "weft edit: status: MESSAGE". Scripts and the window tests wait on
+  // these lines instead of guessing how long a step or a frame takes.
+  bool printChanges = false;
   std::filesystem::path autosaveDir = editor::Autosave::defaultDirectory();
 };
 

@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <random>
 #include <regex>
 #include <sstream>
@@ -98,7 +99,7 @@ class VirtualDisplay {
     run("Xvfb :" + std::to_string(number_) + " -screen 0 1440x900x24 -nolisten tcp >/dev/null 2>&1 & echo $! > '" +
         pidFile_.string() + "'");
     const fs::path socket = "/tmp/.X11-unix/X" + std::to_string(number_);
-    for (int i = 0; i < 100 && !fs::exists(socket); ++i) std::this_thread::sleep_for(50ms);
+    for (int i = 0; i < 600 && !fs::exists(socket); ++i) std::this_thread::sleep_for(50ms);
     ready_ = fs::exists(socket);
   }
   ~VirtualDisplay() { run("kill " + readText(pidFile_) + " 2>/dev/null"); }
@@ -164,10 +165,60 @@ class EditorWindow : public ::testing::Test {
     run("cd '" + root_.string() + "' && " + environment() + "'" + WEFT_BINARY + "' " + arguments + " > '" +
         log.string() + "' 2>&1 & echo $! > '" + pidFile().string() + "'");
   }
-  // Waits until `log` (weft's output) holds `text`; false after `seconds`.
-  static bool waitForOutput(const fs::path& log, const std::string& text, int seconds) {
+  // Waits until `log` (weft's output) holds `text` past its first `from` characters; false after
+  // `seconds`. The waits are generous: a loaded machine draws a frame in seconds, not ms.
+  static bool waitForOutput(const fs::path& log, const std::string& text, int seconds, std::size_t from = 0) {
     for (int i = 0; i < 10 * seconds; ++i) {
-      if (readText(log).find(text) != std::string::npos) return true;
+      const std::string out = readText(log);
+      if (out.size() > from && out.find(text, from) != std::string::npos) return true;
+      std::this_thread::sleep_for(100ms);
+    }
+    return false;
+  }
+  // The same for a pattern: its first match's first group past `from`; none after `seconds`.
+  static std::optional<std::string> waitForMatch(const fs::path& log, const std::regex& pattern, int seconds,
+                                                 std::size_t from = 0) {
+    for (int i = 0; i < 10 * seconds; ++i) {
+      const std::string out = readText(log);
+      std::smatch match;
+      if (out.size() > from && std::regex_search(out.cbegin() + static_cast<std::ptrdiff_t>(from), out.cend(), match, pattern)) {
+        return match[1].str();
+      }
+      std::this_thread::sleep_for(100ms);
+    }
+    return std::nullopt;
+  }
+  static std::size_t outputSize(const fs::path& log) { return readText(log).size(); }
+  // A key tapped in the editor's window (run with --print-changes), then waits until the editor
+  // says it shows `shows` ("step 1 (frame 1, live)"): the frame it was drawn in has been swapped.
+  // False after `seconds`.
+  bool keyAndWaitFor(const std::string& key, const fs::path& log, const std::string& shows, int seconds = 120) const {
+    const std::size_t from = outputSize(log);
+    display_->xdotool("key " + key);
+    return waitForOutput(log, "weft edit: shows " + shows + "\n", seconds, from);
+  }
+  // The screen once the scene's part of it stops changing: the frame the editor said it drew may
+  // still be on its way to the X server; two screenshots in a row that agree are what is shown.
+  Screen settledScreenshot(const fs::path& file, int seconds = 60) const {
+    Screen last = display_->screenshot(file);
+    for (int i = 0; i < 10 * seconds && last.width > 0; ++i) {
+      std::this_thread::sleep_for(100ms);
+      Screen next = display_->screenshot(file);
+      if (next.width != last.width) return {};
+      const weft::editor::ViewportRect r = weft::editor::sceneViewport(next.width, next.height);
+      if (next.sameRegion(last, r.x, r.y, r.x + r.width, r.y + r.height)) return next;
+      last = std::move(next);
+    }
+    return {};
+  }
+  // Waits until the process in the pid file is gone or a zombie (killed, not yet reaped by
+  // whoever adopted it); false after `seconds`.
+  bool waitForExit(int seconds) const {
+    const std::string pid = std::to_string(std::stoll(readText(pidFile())));
+    for (int i = 0; i < 10 * seconds; ++i) {
+      const std::string stat = readText("/proc/" + pid + "/stat");  // "PID (NAME) STATE ..."
+      const std::size_t name = stat.rfind(')');
+      if (stat.empty() || name == std::string::npos || stat.compare(name + 1, 2, " Z") == 0) return true;
       std::this_thread::sleep_for(100ms);
     }
     return false;
@@ -183,14 +234,13 @@ class EditorWindow : public ::testing::Test {
     return run(display_->env() + "timeout " + std::to_string(seconds) +
                " xdotool search --sync --onlyvisible --name '^Weft' >/dev/null 2>&1") == 0;
   }
-  // A press and a release a few frames apart, at window pixel `at`.
+  // A click at window pixel `at`: moved there, pressed and released back to back, as fast as
+  // xdotool sends them. The editor's input queue (input_queue.h) hands the press and the release
+  // to ImGui in frames of their own, at the position they were made, however slow the frames: no
+  // wait between them is needed, and none would be long enough on a loaded machine anyway.
   void pressAt(ImVec2 at) const {
     const std::string xy = std::to_string(static_cast<int>(at.x)) + " " + std::to_string(static_cast<int>(at.y));
-    display_->xdotool("search --name '^Weft' mousemove --window %1 " + xy);
-    std::this_thread::sleep_for(300ms);
-    display_->xdotool("mousedown 1");
-    std::this_thread::sleep_for(300ms);
-    display_->xdotool("mouseup 1");
+    display_->xdotool("search --name '^Weft' mousemove --sync --window %1 " + xy + " mousedown 1 mouseup 1");
   }
   fs::path smallScene(const std::string& preset, const std::string& as) const {
     std::ifstream in(fs::path(WEFT_SOURCE_DIR) / "presets" / "scenes" / (preset + ".json"));
@@ -217,18 +267,19 @@ TEST_F(EditorWindow, AfterKillMinus9TheNextStartOffersTheEditsBack) {
   ASSERT_TRUE(waitForWindow(60)) << readText(root_ / "first.txt");
   ASSERT_TRUE(waitForFirstFrame(root_ / "first.txt", edited, 120)) << readText(root_ / "first.txt");
   pressAt(ImVec2(dial.x + 40, dial.y - 23));  // the weft to about 30 degrees: one edit
-  // The autosave comes within 5 s of the edit.
+  // The autosave comes within 5 s of the edit (the editor's clock: on a loaded machine the click
+  // itself may take many slow frames to arrive, so the wait is far longer).
   const weft::editor::Autosave store(autosaveDir());
-  for (int i = 0; i < 150 && !store.find(edited); ++i) std::this_thread::sleep_for(100ms);
-  ASSERT_TRUE(store.find(edited).has_value()) << "no autosave 15 s after the edit: " << readText(root_ / "first.txt");
+  for (int i = 0; i < 1200 && !store.find(edited); ++i) std::this_thread::sleep_for(100ms);
+  ASSERT_TRUE(store.find(edited).has_value()) << "no autosave 120 s after the edit: " << readText(root_ / "first.txt");
   EXPECT_GT(store.find(edited)->document["cloths"][0].value("weft_angle_deg", 0.0), 10.0);
   run("kill -9 " + readText(pidFile()));
-  std::this_thread::sleep_for(300ms);
+  ASSERT_TRUE(waitForExit(60)) << "the editor outlived kill -9";
 
   // Plain `weft` (another scene) offers it, and leaves it in place when it ends without a choice.
   const fs::path other = smallScene("hanging-sheet", "other.json");
   startWeft("edit '" + other.string() + "' --frames 30 --screenshot second.png", root_ / "second.txt");
-  for (int i = 0; i < 300 && !fs::exists(root_ / "second.png"); ++i) std::this_thread::sleep_for(100ms);
+  for (int i = 0; i < 1800 && !fs::exists(root_ / "second.png"); ++i) std::this_thread::sleep_for(100ms);
   const std::string second = readText(root_ / "second.txt");
   EXPECT_NE(second.find("offering unsaved edits to " + fs::weakly_canonical(edited).string()), std::string::npos)
       << second;
@@ -249,11 +300,11 @@ TEST_F(EditorWindow, KeyTapsShorterThanAFrameAreNotLost) {
   // The taps start once the window has drawn (not after a guessed delay: on a loaded machine
   // building the scene and the first frame take longer than any fixed wait).
   ASSERT_TRUE(waitForFirstFrame(root_ / "taps.txt", scene, 120)) << readText(root_ / "taps.txt");
+  // Click, type, Enter and Ctrl+S sent back to back, with no pause for the window to catch up:
+  // the queue keeps them in order (the click gives the field the keyboard before "20" arrives).
   pressAt(field);
-  std::this_thread::sleep_for(300ms);
   display_->xdotool("type --delay 120 20");
   display_->xdotool("key Return");
-  std::this_thread::sleep_for(500ms);
   display_->xdotool("key ctrl+s");
   // The events are queued and reach ImGui one frame after another, in order, however slow the
   // frames: they all arrive, in as many frames as it takes (about ten here; on a machine loaded
@@ -319,23 +370,22 @@ TEST_F(EditorWindow, ScrubbingBackShowsTheSamePixelsAsWhenTheFrameWasSimulated) 
   const fs::path file = root_ / "scenes" / "scrub.json";
   std::ofstream(file) << scene.dump(2);
 
-  startWeft("edit '" + file.string() + "'", root_ / "scrub.txt");
-  ASSERT_TRUE(waitForWindow(60)) << readText(root_ / "scrub.txt");
-  ASSERT_TRUE(waitForFirstFrame(root_ / "scrub.txt", file, 120)) << readText(root_ / "scrub.txt");
-  display_->xdotool("search --name '^Weft' mousemove --window %1 700 450");  // over the scene, not a panel
-  const auto stepAndWait = [&](const std::string& key) {
-    display_->xdotool("key " + key);
-    std::this_thread::sleep_for(800ms);  // the step, and a few frames drawn
-  };
-  stepAndWait("n");
-  const Screen simulated = display_->screenshot(root_ / "frame1.xwd");
-  ASSERT_GT(simulated.width, 0) << "xwd gave no image";
-  stepAndWait("n");
-  stepAndWait("n");
-  const Screen later = display_->screenshot(root_ / "frame3.xwd");
-  stepAndWait("Left");
-  stepAndWait("Left");
-  const Screen scrubbed = display_->screenshot(root_ / "scrubbed.xwd");
+  const fs::path log = root_ / "scrub.txt";
+  startWeft("edit '" + file.string() + "' --print-changes", log);
+  ASSERT_TRUE(waitForWindow(60)) << readText(log);
+  ASSERT_TRUE(waitForFirstFrame(log, file, 120)) << readText(log);
+  display_->xdotool("search --name '^Weft' mousemove --sync --window %1 700 450");  // over the scene, not a panel
+  // Each key's effect is waited for as the editor reports it drawn (--print-changes), then the
+  // screen is read once it has settled: no guessed delays, which a loaded machine outlasts.
+  ASSERT_TRUE(keyAndWaitFor("n", log, "step 1 (frame 1, live)")) << readText(log);
+  const Screen simulated = settledScreenshot(root_ / "frame1.xwd");
+  ASSERT_GT(simulated.width, 0) << "xwd gave no image, or the screen never settled";
+  ASSERT_TRUE(keyAndWaitFor("n", log, "step 2 (frame 2, live)")) << readText(log);
+  ASSERT_TRUE(keyAndWaitFor("n", log, "step 3 (frame 3, live)")) << readText(log);
+  const Screen later = settledScreenshot(root_ / "frame3.xwd");
+  ASSERT_TRUE(keyAndWaitFor("Left", log, "step 2 (frame 2, cached)")) << readText(log);
+  ASSERT_TRUE(keyAndWaitFor("Left", log, "step 1 (frame 1, cached)")) << readText(log);
+  const Screen scrubbed = settledScreenshot(root_ / "scrubbed.xwd");
   ASSERT_EQ(scrubbed.width, simulated.width);
   const weft::editor::ViewportRect scene3d = weft::editor::sceneViewport(simulated.width, simulated.height);
   const int x0 = scene3d.x + 8, y0 = scene3d.y + 40, x1 = scene3d.x + scene3d.width - 8, y1 = scene3d.y + scene3d.height - 8;
@@ -359,30 +409,27 @@ TEST_F(EditorWindow, AnEditOnAnEarlierFrameContinuesFromThatFrame) {
   const ImVec2 dial = locator.centre("weft/dial");
   locator.finish();
 
-  startWeft("edit '" + file.string() + "' --frames 150", root_ / "back.txt");
-  ASSERT_TRUE(waitForWindow(60)) << readText(root_ / "back.txt");
-  ASSERT_TRUE(waitForFirstFrame(root_ / "back.txt", file, 120)) << readText(root_ / "back.txt");
-  display_->xdotool("search --name '^Weft' mousemove --window %1 700 450");  // over the scene, not a panel
-  for (int i = 0; i < 4; ++i) {
-    display_->xdotool("key n");
-    std::this_thread::sleep_for(300ms);
+  const fs::path log = root_ / "back.txt";
+  startWeft("edit '" + file.string() + "' --print-changes", log);
+  ASSERT_TRUE(waitForWindow(60)) << readText(log);
+  ASSERT_TRUE(waitForFirstFrame(log, file, 120)) << readText(log);
+  display_->xdotool("search --name '^Weft' mousemove --sync --window %1 700 450");  // over the scene, not a panel
+  for (int step = 1; step <= 4; ++step) {
+    const std::string frame = std::to_string(step);
+    ASSERT_TRUE(keyAndWaitFor("n", log, "step " + frame + " (frame " + frame + ", live)")) << readText(log);
   }
-  std::this_thread::sleep_for(1000ms);
-  display_->xdotool("key Left");
-  std::this_thread::sleep_for(300ms);
-  display_->xdotool("key Left");
-  std::this_thread::sleep_for(1000ms);
+  ASSERT_TRUE(keyAndWaitFor("Left", log, "step 3 (frame 3, cached)")) << readText(log);
+  ASSERT_TRUE(keyAndWaitFor("Left", log, "step 2 (frame 2, cached)")) << readText(log);
+  const std::size_t beforeEdit = outputSize(log);
   pressAt(ImVec2(dial.x + 40, dial.y - 23));  // the weft to about 30 degrees: an edit on frame 2
-  std::this_thread::sleep_for(1000ms);
-  // End shows the live world (without the edit going back, it would still be at step 4 and the
-  // summary, which reports what is shown, would say 2 only because frame 2 was on screen).
-  display_->xdotool("search --name '^Weft' mousemove --window %1 700 450");
+  ASSERT_TRUE(waitForOutput(log, "weft edit: status: weft angle", 120, beforeEdit)) << readText(log);
+  // End shows the live world: without the edit going back it would be the world at step 4.
+  display_->xdotool("search --name '^Weft' mousemove --sync --window %1 700 450");
   display_->xdotool("key End");
-  ASSERT_TRUE(waitForOutput(root_ / "back.txt", " frames in ", 300)) << readText(root_ / "back.txt");
-  const std::string out = readText(root_ / "back.txt");
-  std::smatch summary;
-  ASSERT_TRUE(std::regex_search(out, summary, std::regex(R"(the scene at step (\d+))"))) << out;
-  EXPECT_EQ(std::stoll(summary[1]), 2) << "back at frame 2 and on from there: " << out;
+  const std::optional<std::string> live =
+      waitForMatch(log, std::regex(R"(weft edit: shows step (\d+) \(frame \d+, live\))"), 120, beforeEdit);
+  ASSERT_TRUE(live.has_value()) << readText(log);
+  EXPECT_EQ(std::stoll(*live), 2) << "back at frame 2 and on from there: " << readText(log);
 }
 
 }  // namespace

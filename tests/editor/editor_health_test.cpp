@@ -70,5 +70,36 @@ TEST_F(EditorHealth, TheWarningOfWeftRunShowsInThePlaybackPanel) {
   EXPECT_FALSE(session_->unhealthy().has_value()) << "a reset starts a fresh run";
 }
 
+// Found driving the window as an artist (the sword scene warns a few steps in): the warning,
+// wrapped over six lines above the scrub bar, pushed the bar and the "cached frame N: an edit
+// continues from here" note out of the Playback panel's view, so scrubbing back after a warning
+// meant scrolling the panel first. Both stay in view with the warning shown, and so does it.
+TEST_F(EditorHealth, WithAWarningTheScrubBarAndTheCachedFrameNoteStayInView) {
+  json scene = session_->json();
+  scene["solver"]["linear_solver"] = {{"type", "cg"}, {"tolerance", 1e-14}, {"max_iterations", 1}};
+  session_ = std::make_unique<EditorSession>(dir_.write("scenes/failing-solves.json", scene.dump(2)));
+  session_->paused = false;
+  for (int frame = 0; frame < 40 && (!session_->unhealthy() || session_->liveFrame() < 4); ++frame) {
+    session_->advanceFrame(1.0 / 30.0);
+    (void)session_->world();
+  }
+  session_->advanceFrame(0.0);
+  ASSERT_TRUE(session_->unhealthy().has_value());
+  ASSERT_GE(session_->liveFrame(), 2);
+  session_->showFrame(1);  // scrubbed back: paused on a cached frame
+  ASSERT_TRUE(session_->shownFrame().has_value());
+  imgui_->frame(drawUi());
+  probe_.rects.clear();
+  imgui_->frame(drawUi());
+  ASSERT_TRUE(probe_.rects.count("play/panel"));
+  const ImVec4 panel = probe_.rects.at("play/panel");
+  for (const char* id : {"play/timeline", "play/live", "play/health"}) {
+    ASSERT_TRUE(probe_.rects.count(id)) << id;
+    const ImVec4 r = probe_.rects.at(id);
+    EXPECT_GE(r.y, panel.y) << id;
+    EXPECT_LE(r.w, panel.w) << id << " is below the panel's visible part (ends at " << r.w << ", the panel at " << panel.w << ")";
+  }
+}
+
 }  // namespace
 }  // namespace weft::test

@@ -121,6 +121,25 @@ TEST_F(SaveLocationsTest, SavingAShippedSceneAsksWhereTheUsersVersionGoes) {
 // The sharp tags of a shipped tool in a shipped scene: "beside the scene" would be Weft's own
 // presets folder, so it is refused (the dialog offers it disabled); kept in the scene, they go
 // with the user's version of it (Save as).
+// Found driving the window: File > Save as... opened on an empty field, so an artist typed a
+// whole path from nothing. It starts on the scene's own file (edit the name, press Enter).
+TEST_F(SaveLocationsTest, SaveAsStartsOnTheScenesOwnFile) {
+  ASSERT_EQ(ui_.panels.saveAsPath[0], '\0');
+  imgui_->frame(drawUi());
+  imgui_->click(probe_.centre("menu/file"), drawUi());
+  ASSERT_TRUE(probe_.rects.count("menu/saveas")) << "the File menu did not open";
+  imgui_->click(probe_.centre("menu/saveas"), drawUi());
+  imgui_->frame(drawUi());
+  EXPECT_TRUE(ui_.saveAsDialog);
+  EXPECT_EQ(fs::path(ui_.panels.saveAsPath), session_->document().file());
+  imgui_->frame(drawUi());  // the dialog's field takes the keyboard
+  ASSERT_TRUE(session_->edit(withWeftAngle(session_->json(), 0, 20.0), "weft angle").accepted);
+  imgui_->tap(HeadlessImGui::kEnterKey, drawUi());  // as suggested: the scene saved in place
+  imgui_->frame(drawUi());
+  EXPECT_FALSE(session_->dirty());
+  EXPECT_EQ(json::parse(readText(scene_))["cloths"][0]["weft_angle_deg"], 20.0);
+}
+
 TEST_F(SaveLocationsTest, AShippedScenesToolTagsAreNotSavedBesideIt) {
   const fs::path data = dir_.path() / "data";
   fs::create_directories(data / "presets" / "scenes");

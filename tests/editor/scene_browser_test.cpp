@@ -6,12 +6,15 @@
 
 #include <cstdlib>
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <iterator>
 #include <optional>
+#include <sstream>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "editor/panels/preset_names.h"
@@ -164,6 +167,49 @@ TEST(SceneListingCache, AnUnchangedFileIsNotReadAgainAChangedOneIs) {
   EXPECT_EQ(cache.reads(), 6) << "a folder the scene searches changed";
   EXPECT_NE(shadowed.key, tableChanged.key);
   EXPECT_EQ(shadowed.key, ThumbnailCache::keyOf(sheet).value_or(""));
+}
+
+// What size and time alone would miss (scene_listing_cache.h): a same-size edit whose old
+// modification time was put back (cp -p, tar, touch -d), in place and by replacing the file as
+// `git checkout` and save-by-rename editors do. Both are read again.
+TEST(SceneListingCache, ASameSizeEditWithItsOldTimePutBackIsReadAgain) {
+  test::TempDir dir;
+  fs::create_directories(dir.path() / "scenes");
+  const fs::path scene = dir.path() / "scenes" / "sheet.json";
+  fs::copy_file(fs::path(WEFT_SOURCE_DIR) / "presets" / "scenes" / "hanging-sheet.json", scene);
+  const auto described = [](const std::string& text) {
+    std::ifstream in(fs::path(WEFT_SOURCE_DIR) / "presets" / "scenes" / "hanging-sheet.json");
+    nlohmann::json j = nlohmann::json::parse(in);
+    j["description"] = text;
+    return j.dump(2);
+  };
+  std::ofstream(scene, std::ios::trunc) << described("AAAA");
+  const fs::file_time_type oldTime = fs::last_write_time(scene);
+  SceneListingCache cache;
+  ASSERT_EQ(cache.scene(scene).description, "AAAA");
+  ASSERT_EQ(cache.reads(), 1);
+  // Past the kernel's timestamp tick, as an artist's next edit always is.
+  std::this_thread::sleep_for(std::chrono::milliseconds(50));
+
+  {  // in place: same size, old time
+    std::ofstream(scene, std::ios::in | std::ios::out) << described("BBBB");
+    fs::last_write_time(scene, oldTime);
+  }
+  ASSERT_EQ(fs::file_size(scene), described("AAAA").size());
+  EXPECT_EQ(cache.scene(scene).description, "BBBB") << "an in-place same-size edit with its old time put back";
+  EXPECT_EQ(cache.reads(), 2);
+  EXPECT_EQ(cache.scene(scene).description, "BBBB");
+  EXPECT_EQ(cache.reads(), 2) << "and then not again";
+
+  std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  {  // replaced, as git checkout does: a new file of the same size and old time renamed over it
+    const fs::path temporary = dir.path() / "scenes" / "sheet.json.tmp";
+    std::ofstream(temporary) << described("CCCC");
+    fs::last_write_time(temporary, oldTime);
+    fs::rename(temporary, scene);
+  }
+  EXPECT_EQ(cache.scene(scene).description, "CCCC") << "a replaced file of the same size and time";
+  EXPECT_EQ(cache.reads(), 3);
 }
 
 TEST_F(SceneBrowserTest, ReopeningTheBrowserReadsOnlyTheFilesThatChanged) {

@@ -4,6 +4,7 @@
 // step with what the editor shows. No GL, no ImGui: the editor's panels only call commit().
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -11,6 +12,17 @@
 #include <nlohmann/json.hpp>
 
 namespace weft::editor {
+
+// The order of the steps of several histories that the user sees as one (the scene and a tool's
+// sharp tags: one Ctrl+Z). Every commit and undo takes the next tick; a history's steps keep the
+// tick they were committed and undone at, so "the latest edit" and "the edit undone last" can be
+// found across documents (shared_undo.h), and a commit in any of them forgets what every one of
+// them could have redone, as one linear history would.
+struct EditClock {
+  std::uint64_t now = 0;         // the last tick handed out
+  std::uint64_t lastCommit = 0;  // the tick of the latest commit in any history on this clock
+  std::uint64_t tick() { return ++now; }
+};
 
 class EditHistory {
  public:
@@ -44,10 +56,20 @@ class EditHistory {
   // Changes on every commit, undo and redo, so a view can tell when to re-read current().
   std::uint64_t revision() const;
 
+  // Joins the order of other histories (EditClock). Each history starts on a clock of its own.
+  void shareClock(std::shared_ptr<EditClock> clock) { clock_ = std::move(clock); }
+  const std::shared_ptr<EditClock>& clock() const { return clock_; }
+  // When the step undo() would take back was committed (its last merge); 0 when none.
+  std::uint64_t undoTick() const;
+  // When the step redo() would replay was undone; 0 when none.
+  std::uint64_t redoTick() const;
+
  private:
   struct Step {
     nlohmann::json state;
     std::string label;  // what the commit that produced `state` did; empty for the initial state
+    std::uint64_t committedAt = 0;  // clock ticks: the commit (or its latest merge)...
+    std::uint64_t undoneAt = 0;     // ...and the latest undo of this step
   };
 
   std::vector<Step> steps_;  // steps_[0] is the oldest kept state; steps_[index_] is current
@@ -56,6 +78,7 @@ class EditHistory {
   std::string mergeKey_;                  // the key of the open merge; empty when none
   std::optional<std::size_t> mergeStep_;  // the step the open merge writes into, once it has one
   std::uint64_t revision_ = 0;
+  std::shared_ptr<EditClock> clock_ = std::make_shared<EditClock>();
 };
 
 }  // namespace weft::editor

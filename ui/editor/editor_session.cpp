@@ -56,6 +56,7 @@ EditResult EditorSession::edit(nlohmann::json next, const std::string& label, co
 }
 
 void EditorSession::undo() {
+  if (!document_.history().canUndo()) return;  // nothing to re-apply: the timeline stays as it is
   const std::string label = document_.history().undoLabel();
   refusal_.reset();
   document_.history().undo();
@@ -63,6 +64,7 @@ void EditorSession::undo() {
 }
 
 void EditorSession::redo() {
+  if (!document_.history().canRedo()) return;
   const std::string label = document_.history().redoLabel();
   refusal_.reset();
   document_.history().redo();

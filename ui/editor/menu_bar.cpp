@@ -2,22 +2,39 @@
 
 #include <imgui.h>
 
+#include <cstdio>
 #include <filesystem>
 #include <string>
 #include <utility>
+
+#include "editor/installed_data.h"
+#include "editor/shared_undo.h"
 
 namespace weft::editor {
 
 namespace {
 
 void drawFileMenu(EditorSession& session, EditorUi& ui) {
-  if (!ImGui::BeginMenu("File")) return;
+  const bool open = ImGui::BeginMenu("File");
+  recordWidget(ui.panels, "menu/file");
+  if (!open) return;
   if (ImGui::MenuItem("Browse scenes and presets...", nullptr, false, ui.panels.browser != nullptr)) {
     ui.panels.browserOpen = true;
   }
   if (ImGui::MenuItem("Open...")) ui.openDialog = true;
   if (ImGui::MenuItem("Save", "Ctrl+S")) saveScene(session, ui.panels);
-  if (ImGui::MenuItem("Save as...")) ui.saveAsDialog = true;
+  if (ImGui::MenuItem("Save as...")) {
+    // The dialog starts where the scene is, under its name (as a desktop Save As does): the
+    // artist edits the name or the folder instead of typing a whole path from nothing. A shipped
+    // scene suggests the user's own copy instead, as Save does.
+    if (ui.panels.saveAsPath[0] == '\0' && !session.document().file().empty()) {
+      const std::filesystem::path start = session.savesIntoInstalledData() ? suggestedSceneCopy(session.document().file())
+                                                                           : session.document().file();
+      std::snprintf(ui.panels.saveAsPath, sizeof ui.panels.saveAsPath, "%s", start.string().c_str());
+    }
+    ui.saveAsDialog = true;
+  }
+  recordWidget(ui.panels, "menu/saveas");
   ImGui::Separator();
   if (ImGui::MenuItem("Save material as preset...")) {
     ui.panels.presetFolder[0] = '\0';  // the material panel fills in the suggested folder
@@ -32,10 +49,15 @@ void drawEditMenu(EditorSession& session, PanelState& state) {
   const bool open = ImGui::BeginMenu("Edit");
   recordWidget(state, "menu/edit");
   if (!open) return;
-  const EditHistory& history = session.document().history();
-  if (ImGui::MenuItem(("Undo " + history.undoLabel()).c_str(), "Ctrl+Z", false, history.canUndo())) session.undo();
+  ToolTagEditor* tool = state.tool ? &*state.tool : nullptr;
+  if (ImGui::MenuItem(("Undo " + latestUndoLabel(session, tool)).c_str(), "Ctrl+Z", false, canUndoLatest(session, tool))) {
+    undoLatest(session, tool);
+  }
   recordWidget(state, "menu/undo");
-  if (ImGui::MenuItem(("Redo " + history.redoLabel()).c_str(), "Ctrl+Y", false, history.canRedo())) session.redo();
+  if (ImGui::MenuItem(("Redo " + latestRedoLabel(session, tool)).c_str(), "Ctrl+Y", false, canRedoLatest(session, tool))) {
+    redoLatest(session, tool);
+  }
+  recordWidget(state, "menu/redo");
   ImGui::EndMenu();
 }
 
@@ -104,7 +126,7 @@ void drawHelp(EditorUi& ui) {
       "  B                        throw a ball at the cursor\n"
       "Keys (outside text fields):\n"
       "  Space play / pause    N step    R reset to t = 0 (the camera stays)    F frame the scene\n"
-      "  Ctrl+Z undo    Ctrl+Y redo    Ctrl+S save\n"
+      "  Ctrl+Z undo (scene edits and sharp tags alike)    Ctrl+Y or Ctrl+Shift+Z redo    Ctrl+S save\n"
       "  Esc closes an open popup, else quits (asking first about unsaved edits)");
   if (ImGui::Button("Close") || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false)) {
     ui.helpOpen = false;
@@ -114,6 +136,21 @@ void drawHelp(EditorUi& ui) {
 }
 
 }  // namespace
+
+void applyEditShortcuts(EditorSession& session, PanelState& state) {
+  const ImGuiIO& io = ImGui::GetIO();
+  if (!io.KeyCtrl) return;
+  ToolTagEditor* tool = state.tool ? &*state.tool : nullptr;
+  // Shift+Z is checked before Z alone: with Shift held, Ctrl+Z redoes (as in most editors).
+  if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Z))) {
+    if (io.KeyShift) {
+      redoLatest(session, tool);
+    } else {
+      undoLatest(session, tool);
+    }
+  }
+  if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Y))) redoLatest(session, tool);
+}
 
 void drawMenuBar(EditorSession& session, EditorUi& ui) {
   if (ImGui::BeginMainMenuBar()) {

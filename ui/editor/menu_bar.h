@@ -10,4 +10,9 @@ namespace weft::editor {
 
 void drawMenuBar(EditorSession& session, EditorUi& ui);
 
+// The Edit menu's keys, between ImGui::NewFrame and Render when no text field has the keyboard:
+// Ctrl+Z undoes the latest edit, scene or sharp tag alike (shared_undo.h); Ctrl+Y and
+// Ctrl+Shift+Z redo. ImGui's key map names the keys (the GLFW backend fills it).
+void applyEditShortcuts(EditorSession& session, PanelState& state);
+
 }  // namespace weft::editor

@@ -1,5 +1,7 @@
 #include "scene_listing_cache.h"
 
+#include <sys/stat.h>
+
 #include <system_error>
 
 #include "editor/panels/preset_names.h"
@@ -11,13 +13,16 @@ namespace weft::editor {
 namespace fs = std::filesystem;
 
 FileStamp stampOf(const fs::path& path) {
-  std::error_code ec;
-  const fs::file_status status = fs::status(path, ec);
-  if (ec || !fs::exists(status)) return {};
+  struct stat st {};
+  if (::stat(path.c_str(), &st) != 0) return {};  // follows links, as reading the file does
+  const auto ns = [](const timespec& t) { return static_cast<std::int64_t>(t.tv_sec) * 1'000'000'000 + t.tv_nsec; };
   FileStamp stamp;
   stamp.exists = true;
-  stamp.size = fs::is_regular_file(status) ? fs::file_size(path, ec) : 0;
-  stamp.modified = fs::last_write_time(path, ec);
+  stamp.size = S_ISREG(st.st_mode) ? static_cast<std::uintmax_t>(st.st_size) : 0;
+  stamp.modifiedNs = ns(st.st_mtim);
+  stamp.statusChangedNs = ns(st.st_ctim);
+  stamp.inode = static_cast<std::uint64_t>(st.st_ino);
+  stamp.device = static_cast<std::uint64_t>(st.st_dev);
   return stamp;
 }
 

@@ -115,6 +115,8 @@ ToolTagEditor::ToolTagEditor(const EditorSession& session, int obstacle)
   const ObstacleSpec& spec = session.scene().obstacles[static_cast<std::size_t>(obstacle)];
   name_ = spec.name;
   inScene_ = !spec.shape.sharpTagsInline.is_null();
+  // One undo history with the scene's edits (shared_undo.h).
+  document_.history().shareClock(session.document().history().clock());
 }
 
 bool ToolTagEditor::reapply(EditorSession& session) const {
@@ -158,16 +160,23 @@ int ToolTagEditor::tagEdgesSharperThan(EditorSession& session, double degrees) {
 }
 
 void ToolTagEditor::undo(EditorSession& session) {
+  if (!document_.history().canUndo()) return;
+  const std::string label = document_.history().undoLabel();
   document_.history().undo();
   applyToWorld(session);
+  session.status = "undo " + label;
 }
 
 void ToolTagEditor::redo(EditorSession& session) {
+  if (!document_.history().canRedo()) return;
+  const std::string label = document_.history().redoLabel();
   document_.history().redo();
   applyToWorld(session);
+  session.status = "redo " + label;
 }
 
 void ToolTagEditor::commit(EditorSession& session, const SharpTags& tags, const std::string& label) {
+  session.endMerge();  // a slider drag in a panel is over: its next move is a step after this one
   document_.history().commit(sharpTagsJson(tags), label);
   applyToWorld(session);
   session.status = label + " (save the tags to keep them)";

@@ -1,8 +1,9 @@
 #pragma once
 // Sharp tags of a tool, edited in the editor (thesis Figure 3.3: the sharp parts of a tool cut).
 // The tags live in a JSON file beside the tool's mesh (core/rigid/sharp_tags.h); the editor keeps
-// that file as its own document with its own undo history, and applies each change to the running
-// world at once, so the red highlights and the cutting records follow the clicks.
+// that file as its own document, whose undo steps are ordered with the scene's (one Ctrl+Z for both:
+// shared_undo.h), and applies each change to the running world at once, so the red highlights and
+// the cutting records follow the clicks.
 #include <array>
 #include <filesystem>
 #include <optional>
@@ -53,6 +54,8 @@ class ToolTagEditor {
   // Tags `edges` sharp (a box select), as one undo step labelled `label`. Returns how many were
   // newly tagged.
   int tagEdges(EditorSession& session, const std::vector<std::array<int, 2>>& edges, const std::string& label);
+  // This document's own step back or forward (no-op when none). The editor's Undo and Redo go
+  // through shared_undo.h, which calls these when the tags hold the latest step.
   void undo(EditorSession& session);
   void redo(EditorSession& session);
   void save() { document_.save(); }  // atomic, FILE.bak kept

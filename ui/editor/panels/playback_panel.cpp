@@ -24,6 +24,16 @@ void drawTimeline(EditorSession& session, PanelState& state) {
     session.showFrame(frame);
   }
   recordWidget(state, "play/timeline");
+  // One line right under the bar (the frame number is on it), so it is in view with the bar.
+  if (const std::optional<long long> shown = session.shownFrame()) {
+    if (ImGui::SmallButton("Live")) session.showLive();
+    recordWidget(state, "play/live");
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("back to frame %lld, where the simulation is (End)", live);
+    ImGui::SameLine();
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.1f, 0.35f, 0.75f, 1.0f));
+    ImGui::TextUnformatted("cached: an edit goes on from here");
+    ImGui::PopStyleColor();
+  }
   constexpr double kMiB = 1024.0 * 1024.0;
   // Every frame is shown from the cache; an edit resumes from the nearest one keeping its world.
   // The changes a resume replays count too (step_worker.h).
@@ -34,14 +44,6 @@ void drawTimeline(EditorSession& session, PanelState& state) {
                      frames.changeLogBytes() / 1024.0);
   ImGui::PopStyleColor();
   recordWidget(state, "play/cache");
-  if (const std::optional<long long> shown = session.shownFrame()) {
-    if (ImGui::SmallButton("Live")) session.showLive();
-    recordWidget(state, "play/live");
-    ImGui::SameLine();
-    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.1f, 0.35f, 0.75f, 1.0f));
-    ImGui::TextWrapped("cached frame %lld of %lld: an edit continues from here", *shown, live);
-    ImGui::PopStyleColor();
-  }
 }
 
 }  // namespace
@@ -50,6 +52,11 @@ void drawPlaybackPanel(EditorSession& session, PanelState& state) {
   if (!ImGui::Begin("Playback")) {
     ImGui::End();
     return;
+  }
+  if (state.probe != nullptr) {  // the panel's own rect: tests check what stays in view
+    const ImVec2 pos = ImGui::GetWindowPos();
+    const ImVec2 size = ImGui::GetWindowSize();
+    state.probe->rects["play/panel"] = ImVec4(pos.x, pos.y, pos.x + size.x, pos.y + size.y);
   }
   if (ImGui::Button(session.paused ? "Play" : "Pause")) session.paused = !session.paused;
   recordWidget(state, "play/toggle");
@@ -78,12 +85,21 @@ void drawPlaybackPanel(EditorSession& session, PanelState& state) {
   ImGui::Text("t = %.3f s   step %lld%s", shown->time, shown->stepCount,
               session.stopped() ? "   STOPPED (non-finite)" : "");
   if (const auto& unhealthy = session.unhealthy()) {
-    // The warning `weft run` prints for the same steps (sim/health_check.h), until a reset;
-    // above the timeline, so it is in view without scrolling.
+    // The warning `weft run` prints for the same steps (sim/health_check.h), until a reset: a red
+    // word beside the time, the whole message under the cursor and in the status bar. Wrapped
+    // here it took six lines and pushed the scrub bar out of the panel's view.
+    ImGui::SameLine();
     ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.8f, 0.1f, 0.1f, 1.0f));
-    ImGui::TextWrapped("warning: %s", healthWarning(*unhealthy).c_str());
+    ImGui::TextUnformatted("WARNING");
     ImGui::PopStyleColor();
     recordWidget(state, "play/health");
+    if (ImGui::IsItemHovered()) {
+      ImGui::BeginTooltip();
+      ImGui::PushTextWrapPos(ImGui::GetFontSize() * 35.0f);
+      ImGui::TextUnformatted(("warning: " + healthWarning(*unhealthy)).c_str());
+      ImGui::PopTextWrapPos();
+      ImGui::EndTooltip();
+    }
   }
   drawTimeline(session, state);
   if (state.recorder != nullptr) {

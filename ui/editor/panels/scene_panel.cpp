@@ -9,6 +9,7 @@
 
 #include "editor/scene_edits.h"
 #include "panels.h"
+#include "editor/shared_undo.h"
 #include "preset_names.h"
 
 namespace weft::editor {
@@ -129,13 +130,15 @@ void drawScenePanel(EditorSession& session, PanelState& state) {
   if (ImGui::Button("Save")) saveScene(session, state);
   recordWidget(state, "scene/save");
   ImGui::SameLine();
-  ImGui::BeginDisabled(!session.document().history().canUndo());
-  if (ImGui::Button("Undo")) session.undo();
+  // The editor's one history (shared_undo.h): a sharp tag clicked last is undone here too.
+  ToolTagEditor* tool = state.tool ? &*state.tool : nullptr;
+  ImGui::BeginDisabled(!canUndoLatest(session, tool));
+  if (ImGui::Button("Undo")) undoLatest(session, tool);
   recordWidget(state, "scene/undo");
   ImGui::EndDisabled();
   ImGui::SameLine();
-  ImGui::BeginDisabled(!session.document().history().canRedo());
-  if (ImGui::Button("Redo")) session.redo();
+  ImGui::BeginDisabled(!canRedoLatest(session, tool));
+  if (ImGui::Button("Redo")) redoLatest(session, tool);
   recordWidget(state, "scene/redo");
   ImGui::EndDisabled();
   if (state.browser != nullptr) {

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "panels.h"
+#include "editor/shared_undo.h"
 
 namespace weft::editor {
 
@@ -127,12 +128,19 @@ void drawToolsPanel(EditorSession& session, PanelState& state) {
     ImGui::SameLine();
     ImGui::SetNextItemWidth(60);
     ImGui::InputDouble("deg", &state.sharperThanDeg, 0.0, 0.0, "%.0f", ImGuiInputTextFlags_AutoSelectAll);
-    ImGui::BeginDisabled(!state.tool->document().history().canUndo());
-    if (ImGui::Button("Undo tag")) state.tool->undo(session);
+    // The editor's one history (shared_undo.h), as Ctrl+Z: a tag's own undo here would take back
+    // an older tag while a newer parameter edit stays, an order no other Undo follows.
+    ToolTagEditor* tool = &*state.tool;
+    ImGui::BeginDisabled(!canUndoLatest(session, tool));
+    if (ImGui::Button("Undo")) undoLatest(session, tool);
+    if (ImGui::IsItemHovered() && canUndoLatest(session, tool)) ImGui::SetTooltip("undo %s (Ctrl+Z)", latestUndoLabel(session, tool).c_str());
+    recordWidget(state, "tools/undo");
     ImGui::EndDisabled();
     ImGui::SameLine();
-    ImGui::BeginDisabled(!state.tool->document().history().canRedo());
-    if (ImGui::Button("Redo tag")) state.tool->redo(session);
+    ImGui::BeginDisabled(!canRedoLatest(session, tool));
+    if (ImGui::Button("Redo")) redoLatest(session, tool);
+    if (ImGui::IsItemHovered() && canRedoLatest(session, tool)) ImGui::SetTooltip("redo %s (Ctrl+Y)", latestRedoLabel(session, tool).c_str());
+    recordWidget(state, "tools/redo");
     ImGui::EndDisabled();
     ImGui::SameLine();
     if (ImGui::Button("Save tags")) {
