@@ -21,21 +21,24 @@ void printScores(std::ostream& out, const StudyAnalysis& analysis, const std::ve
   }
 }
 
+// As SPSS prints them: mean ranks to 2 decimals, the statistic and p to 3.
 void printFriedman(std::ostream& out, const FriedmanResult& result) {
   out << "  mean rank: ";
   for (Fabric fabric : kFabrics) {
-    out << fabricName(fabric) << " " << std::setprecision(2) << result.meanRanks[static_cast<std::size_t>(indexOf(fabric))]
+    out << fabricName(fabric) << " " << std::fixed << std::setprecision(2) << result.meanRanks[static_cast<std::size_t>(indexOf(fabric))]
         << (fabric == Fabric::Swimsuit ? "\n" : ", ");
   }
-  out << std::setprecision(3) << "  N = " << result.blocks << ", chi-squared = " << result.statistic
+  out << std::fixed << std::setprecision(3) << "  N = " << result.blocks << ", chi-squared = " << result.statistic
       << " (tie-corrected; " << result.uncorrectedStatistic << " without), df = " << result.degreesOfFreedom
       << ", asymptotic p = " << result.asymptoticP << "\n";
 }
 
 void printWilcoxon(std::ostream& out, const std::string& label, const WilcoxonResult& result) {
-  out << std::setprecision(3) << "  " << padded(label, 34) << "N = " << result.pairs << ", +" << result.positive << " -"
-      << result.negative << " =" << result.ties << ", W+ = " << std::setprecision(3) << result.positiveRankSum
-      << ", W- = " << result.negativeRankSum << ", Z = " << result.z << ", asymptotic p = " << result.asymptoticP
+  // As SPSS prints them: rank sums to 1 decimal, Z and p to 3.
+  out << std::fixed << std::setprecision(1) << "  " << padded(label, 34) << "N = " << result.pairs << ", +"
+      << result.positive << " -" << result.negative << " =" << result.ties << ", W+ = " << result.positiveRankSum
+      << ", W- = " << result.negativeRankSum << std::setprecision(3) << ", Z = " << result.z
+      << ", asymptotic p = " << result.asymptoticP
       << "\n";
 }
 
@@ -99,9 +102,9 @@ void printStudyReport(std::ostream& out, const StudyAnalysis& analysis) {
   printFriedman(out, analysis.groupFriedman);
 
   out << "\nWilcoxon signed-rank tests (differences second - first; W+ is the thesis' \"test statistic\"; two-sided p)\n";
-  printWilcoxon(out, "stiff vs stretchy clips (4.16)", analysis.stretchyVsStiff);
+  printWilcoxon(out, "stiff - stretchy clips (4.16)", analysis.stretchyVsStiff);
   for (Fabric fabric : kFabrics) {
-    printWilcoxon(out, std::string(fabricName(fabric)) + ": group vs fabric guess",
+    printWilcoxon(out, std::string(fabricName(fabric)) + ": group - fabric guess",
                   analysis.fabricVsGroup[static_cast<std::size_t>(indexOf(fabric))]);
   }
   out.flags(oldFlags);
