@@ -7,8 +7,8 @@
 namespace weft::study {
 
 struct RankedValues {
-  std::vector<double> ranks;   // ranks[i] belongs to values[i]
-  double tieSum = 0.0;         // Σ (t³ − t) over the groups of t tied values, for the tie corrections
+  std::vector<double> ranks;  // ranks[i] belongs to values[i]
+  double tieSum = 0.0;        // Σ (t³ − t) over the groups of t tied values, for the tie corrections
 };
 
 RankedValues averageRanks(const std::vector<double>& values);

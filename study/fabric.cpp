@@ -4,10 +4,14 @@ namespace weft::study {
 
 std::string_view fabricName(Fabric fabric) {
   switch (fabric) {
-    case Fabric::Denim: return "denim";
-    case Fabric::TShirt: return "t-shirt";
-    case Fabric::Pants: return "pants";
-    case Fabric::Swimsuit: return "swimsuit";
+    case Fabric::Denim:
+      return "denim";
+    case Fabric::TShirt:
+      return "t-shirt";
+    case Fabric::Pants:
+      return "pants";
+    case Fabric::Swimsuit:
+      return "swimsuit";
   }
   return "?";
 }

@@ -11,13 +11,13 @@
 namespace weft::study {
 
 struct FriedmanResult {
-  int blocks = 0;                   // N: participants (rows)
-  int conditions = 0;               // k: fabrics (columns)
-  std::vector<double> meanRanks;    // per condition, in column order
-  double statistic = 0.0;           // chi-squared, tie-corrected (what SPSS reports)
-  double uncorrectedStatistic = 0.0;// the textbook 12/(nk(k+1)) ΣR² − 3n(k+1), for comparison
-  int degreesOfFreedom = 0;         // k − 1
-  double asymptoticP = 1.0;         // P(chi-squared(k − 1) ≥ statistic)
+  int blocks = 0;                     // N: participants (rows)
+  int conditions = 0;                 // k: fabrics (columns)
+  std::vector<double> meanRanks;      // per condition, in column order
+  double statistic = 0.0;             // chi-squared, tie-corrected (what SPSS reports)
+  double uncorrectedStatistic = 0.0;  // the textbook 12/(nk(k+1)) ΣR² − 3n(k+1), for comparison
+  int degreesOfFreedom = 0;           // k − 1
+  double asymptoticP = 1.0;           // P(chi-squared(k − 1) ≥ statistic)
 };
 
 // scores[participant][condition]; every row must have the same k ≥ 2 entries and n ≥ 1. When every

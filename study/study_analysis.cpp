@@ -36,7 +36,8 @@ StudyAnalysis analyzeStudy(const std::vector<StudyAnswer>& answers, const std::s
   std::vector<Tally> tallies;
   for (const StudyAnswer& answer : answers) {
     const int clip = indexIn(analysis.clips, answer.clip, [](const ClipGuesses& c) { return c.clip; });
-    if (clip == static_cast<int>(analysis.clips.size())) analysis.clips.push_back({answer.clip, answer.trueFabric, {}, 0});
+    if (clip == static_cast<int>(analysis.clips.size()))
+      analysis.clips.push_back({answer.clip, answer.trueFabric, {}, 0});
     ClipGuesses& guesses = analysis.clips[static_cast<std::size_t>(clip)];
     if (guesses.trueFabric != answer.trueFabric) {
       throw InputError(file, "line " + std::to_string(answer.line) + ": true_fabric",

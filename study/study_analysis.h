@@ -28,13 +28,13 @@ struct ClipGuesses {
 };
 
 struct StudyAnalysis {
-  std::vector<ClipGuesses> clips;          // in the order first seen in the file
-  std::vector<std::string> participants;   // likewise; the rows of the score tables
+  std::vector<ClipGuesses> clips;                   // in the order first seen in the file
+  std::vector<std::string> participants;            // likewise; the rows of the score tables
   std::vector<std::array<double, 4>> fabricScores;  // [participant][fabric]: share guessed right
   std::vector<std::array<double, 4>> groupScores;   // [participant][fabric]: share whose group was right
   std::vector<std::array<double, 2>> groupCorrect;  // [participant][group]: clips whose group was right
-  FriedmanResult fabricFriedman;           // over fabricScores
-  FriedmanResult groupFriedman;            // over groupScores
+  FriedmanResult fabricFriedman;                    // over fabricScores
+  FriedmanResult groupFriedman;                     // over groupScores
   // first = stretchy, second = stiff: the order whose W+ is the thesis' Table 4.16 "3.0".
   WilcoxonResult stretchyVsStiff;
   // Per fabric, first = fabric score, second = group score (Tables 4.21, 4.23, 4.25, 4.27).

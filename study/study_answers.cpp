@@ -13,8 +13,8 @@ namespace weft::study {
 namespace {
 
 enum Column { kParticipant, kClip, kTrueFabric, kTrueGroup, kGuessedFabric, kGuessedGroup, kColumnCount };
-constexpr std::array<const char*, kColumnCount> kColumnNames{"participant",    "clip",          "true_fabric",
-                                                             "true_group",     "guessed_fabric", "guessed_group"};
+constexpr std::array<const char*, kColumnCount> kColumnNames{"participant", "clip",           "true_fabric",
+                                                             "true_group",  "guessed_fabric", "guessed_group"};
 
 std::string trimmed(const std::string& text) {
   const auto first = text.find_first_not_of(" \t\r");
@@ -48,15 +48,19 @@ std::array<int, kColumnCount> readHeader(const std::vector<std::string>& header,
       if (header[i] == kColumnNames[c]) column = c;
     }
     if (column < 0) {
-      throw InputError(file, where(line) + ": header",
-                       "unknown column '" + echo(header[i], 60) +
-                           "' (the columns are participant, clip, true_fabric, true_group, guessed_fabric, guessed_group)");
+      throw InputError(
+          file, where(line) + ": header",
+          "unknown column '" + echo(header[i], 60) +
+              "' (the columns are participant, clip, true_fabric, true_group, guessed_fabric, guessed_group)");
     }
-    if (fieldOf[column] >= 0) throw InputError(file, where(line) + ": header", std::string("column '") + kColumnNames[column] + "' appears twice");
+    if (fieldOf[column] >= 0)
+      throw InputError(file, where(line) + ": header",
+                       std::string("column '") + kColumnNames[column] + "' appears twice");
     fieldOf[column] = static_cast<int>(i);
   }
   for (int c = 0; c < kColumnCount; ++c) {
-    if (fieldOf[c] < 0) throw InputError(file, where(line) + ": header", std::string("missing column '") + kColumnNames[c] + "'");
+    if (fieldOf[c] < 0)
+      throw InputError(file, where(line) + ": header", std::string("missing column '") + kColumnNames[c] + "'");
   }
   return fieldOf;
 }
@@ -93,7 +97,8 @@ std::vector<StudyAnswer> parseStudyAnswers(std::istream& in, const std::string& 
     }
     if (fields.size() != kColumnCount) {
       throw InputError(file, where(line),
-                       "malformed row: " + std::to_string(fields.size()) + " fields, the header has " + std::to_string(kColumnCount));
+                       "malformed row: " + std::to_string(fields.size()) + " fields, the header has " +
+                           std::to_string(kColumnCount));
     }
     const auto field = [&](Column c) -> const std::string& { return fields[static_cast<std::size_t>((*fieldOf)[c])]; };
     StudyAnswer answer;
@@ -114,12 +119,15 @@ std::vector<StudyAnswer> parseStudyAnswers(std::istream& in, const std::string& 
     answer.guessedGroup = field(kGuessedGroup).empty() ? groupOf(answer.guessedFabric)
                                                        : groupField(field(kGuessedGroup), file, line, "guessed_group");
     if (!answered.emplace(answer.participant, answer.clip).second) {
-      throw InputError(file, fieldAt(line, "clip"),
-                       "participant '" + echo(answer.participant, 60) + "' already answered clip '" + echo(answer.clip, 60) + "'");
+      throw InputError(
+          file, fieldAt(line, "clip"),
+          "participant '" + echo(answer.participant, 60) + "' already answered clip '" + echo(answer.clip, 60) + "'");
     }
     answers.push_back(std::move(answer));
   }
-  if (!fieldOf) throw InputError(file, "header", "no header line (participant,clip,true_fabric,true_group,guessed_fabric,guessed_group)");
+  if (!fieldOf)
+    throw InputError(file, "header",
+                     "no header line (participant,clip,true_fabric,true_group,guessed_fabric,guessed_group)");
   if (answers.empty()) throw InputError(file, "", "no answers after the header");
   return answers;
 }

@@ -25,8 +25,8 @@ void printScores(std::ostream& out, const StudyAnalysis& analysis, const std::ve
 void printFriedman(std::ostream& out, const FriedmanResult& result) {
   out << "  mean rank: ";
   for (Fabric fabric : kFabrics) {
-    out << fabricName(fabric) << " " << std::fixed << std::setprecision(2) << result.meanRanks[static_cast<std::size_t>(indexOf(fabric))]
-        << (fabric == Fabric::Swimsuit ? "\n" : ", ");
+    out << fabricName(fabric) << " " << std::fixed << std::setprecision(2)
+        << result.meanRanks[static_cast<std::size_t>(indexOf(fabric))] << (fabric == Fabric::Swimsuit ? "\n" : ", ");
   }
   out << std::fixed << std::setprecision(3) << "  N = " << result.blocks << ", chi-squared = " << result.statistic
       << " (tie-corrected; " << result.uncorrectedStatistic << " without), df = " << result.degreesOfFreedom
@@ -38,13 +38,13 @@ void printWilcoxon(std::ostream& out, const std::string& label, const WilcoxonRe
   out << std::fixed << std::setprecision(1) << "  " << padded(label, 34) << "N = " << result.pairs << ", +"
       << result.positive << " -" << result.negative << " =" << result.ties << ", W+ = " << result.positiveRankSum
       << ", W- = " << result.negativeRankSum << std::setprecision(3) << ", Z = " << result.z
-      << ", asymptotic p = " << result.asymptoticP
-      << "\n";
+      << ", asymptotic p = " << result.asymptoticP << "\n";
 }
 
 nlohmann::ordered_json friedmanJson(const FriedmanResult& result) {
   nlohmann::ordered_json meanRanks;
-  for (Fabric fabric : kFabrics) meanRanks[std::string(fabricName(fabric))] = result.meanRanks[static_cast<std::size_t>(indexOf(fabric))];
+  for (Fabric fabric : kFabrics)
+    meanRanks[std::string(fabricName(fabric))] = result.meanRanks[static_cast<std::size_t>(indexOf(fabric))];
   return {{"n", result.blocks},
           {"mean_ranks", meanRanks},
           {"statistic", result.statistic},
@@ -70,7 +70,8 @@ nlohmann::ordered_json scoresJson(const StudyAnalysis& analysis, const std::vect
   nlohmann::ordered_json rows = nlohmann::ordered_json::array();
   for (std::size_t p = 0; p < scores.size(); ++p) {
     nlohmann::ordered_json row{{"participant", analysis.participants[p]}};
-    for (Fabric fabric : kFabrics) row[std::string(fabricName(fabric))] = scores[p][static_cast<std::size_t>(indexOf(fabric))];
+    for (Fabric fabric : kFabrics)
+      row[std::string(fabricName(fabric))] = scores[p][static_cast<std::size_t>(indexOf(fabric))];
     rows.push_back(row);
   }
   return rows;
@@ -101,7 +102,8 @@ void printStudyReport(std::ostream& out, const StudyAnalysis& analysis) {
   out << "Friedman test across fabrics, by group guesses (Tables 4.18, 4.19)\n";
   printFriedman(out, analysis.groupFriedman);
 
-  out << "\nWilcoxon signed-rank tests (differences second - first; W+ is the thesis' \"test statistic\"; two-sided p)\n";
+  out << "\nWilcoxon signed-rank tests (differences second - first; W+ is the thesis' \"test statistic\"; two-sided "
+         "p)\n";
   printWilcoxon(out, "stiff - stretchy clips (4.16)", analysis.stretchyVsStiff);
   for (Fabric fabric : kFabrics) {
     printWilcoxon(out, std::string(fabricName(fabric)) + ": group - fabric guess",
@@ -115,7 +117,8 @@ nlohmann::ordered_json studyReportJson(const StudyAnalysis& analysis) {
   nlohmann::ordered_json clips = nlohmann::ordered_json::array();
   for (const ClipGuesses& clip : analysis.clips) {
     nlohmann::ordered_json guesses;
-    for (Fabric fabric : kFabrics) guesses[std::string(fabricName(fabric))] = clip.guesses[static_cast<std::size_t>(indexOf(fabric))];
+    for (Fabric fabric : kFabrics)
+      guesses[std::string(fabricName(fabric))] = clip.guesses[static_cast<std::size_t>(indexOf(fabric))];
     clips.push_back({{"clip", clip.clip},
                      {"fabric", fabricName(clip.trueFabric)},
                      {"answers", clip.answers},
@@ -123,9 +126,10 @@ nlohmann::ordered_json studyReportJson(const StudyAnalysis& analysis) {
   }
   nlohmann::ordered_json groupCorrect = nlohmann::ordered_json::array();
   for (std::size_t p = 0; p < analysis.groupCorrect.size(); ++p) {
-    groupCorrect.push_back({{"participant", analysis.participants[p]},
-                            {"stiff", analysis.groupCorrect[p][static_cast<std::size_t>(indexOf(ElasticityGroup::Stiff))]},
-                            {"stretchy", analysis.groupCorrect[p][static_cast<std::size_t>(indexOf(ElasticityGroup::Stretchy))]}});
+    groupCorrect.push_back(
+        {{"participant", analysis.participants[p]},
+         {"stiff", analysis.groupCorrect[p][static_cast<std::size_t>(indexOf(ElasticityGroup::Stiff))]},
+         {"stretchy", analysis.groupCorrect[p][static_cast<std::size_t>(indexOf(ElasticityGroup::Stretchy))]}});
   }
   nlohmann::ordered_json perFabric;
   for (Fabric fabric : kFabrics) {

@@ -6,11 +6,10 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <random>
 #include <sstream>
 #include <string>
-
-#include <nlohmann/json.hpp>
 
 #include "study/study_analysis.h"
 #include "study/thesis_tables.h"
@@ -45,9 +44,9 @@ struct ThesisClip {
   const char* id;
   Fabric fabric;
 };
-constexpr ThesisClip kThesisClips[] = {{"cloth1", Fabric::Denim},   {"cloth2", Fabric::TShirt},
-                                       {"cloth3", Fabric::Pants},   {"cloth4", Fabric::Swimsuit},
-                                       {"cloth5", Fabric::TShirt},  {"cloth6", Fabric::Denim}};
+constexpr ThesisClip kThesisClips[] = {{"cloth1", Fabric::Denim},  {"cloth2", Fabric::TShirt},
+                                       {"cloth3", Fabric::Pants},  {"cloth4", Fabric::Swimsuit},
+                                       {"cloth5", Fabric::TShirt}, {"cloth6", Fabric::Denim}};
 
 // An answers file whose scores are Tables 4.11 and 4.17. Of each participant's clips of a fabric,
 // the first (fabric score × clips) are guessed right; the next ones until (group score × clips)
@@ -56,7 +55,8 @@ constexpr ThesisClip kThesisClips[] = {{"cloth1", Fabric::Denim},   {"cloth2", F
 // with its tables; guessed_group is left empty, as the thesis scored groups from fabric guesses.
 std::string answersFromTables4_11And4_17() {
   std::ostringstream csv;
-  csv << "# Built from thesis Tables 4.11 and 4.17\nparticipant,clip,true_fabric,true_group,guessed_fabric,guessed_group\n";
+  csv << "# Built from thesis Tables 4.11 and "
+         "4.17\nparticipant,clip,true_fabric,true_group,guessed_fabric,guessed_group\n";
   for (std::size_t p = 0; p < kTable4_11.size(); ++p) {
     for (Fabric fabric : kFabrics) {
       const auto f = static_cast<std::size_t>(indexOf(fabric));
@@ -66,8 +66,8 @@ std::string answersFromTables4_11And4_17() {
       int seen = 0;
       for (const ThesisClip& clip : kThesisClips) {
         if (clip.fabric != fabric) continue;
-        const Fabric sameGroupOther = fabric == Fabric::Denim ? Fabric::Pants
-                                      : fabric == Fabric::Pants ? Fabric::Denim
+        const Fabric sameGroupOther = fabric == Fabric::Denim    ? Fabric::Pants
+                                      : fabric == Fabric::Pants  ? Fabric::Denim
                                       : fabric == Fabric::TShirt ? Fabric::Swimsuit
                                                                  : Fabric::TShirt;
         const Fabric otherGroup = groupOf(fabric) == ElasticityGroup::Stiff ? Fabric::Swimsuit : Fabric::Denim;
@@ -94,7 +94,8 @@ TEST_F(StudyAnswersFile, ThesisTablesThroughTheCsvReproduceTheThesisResults) {
   }
   // Table 4.10's right guesses per fabric: denim 5 + 6, t-shirt 6 + 6, pants 7, swimsuit 8.
   std::array<int, 4> right{};
-  for (const ClipGuesses& clip : analysis.clips) right[indexOf(clip.trueFabric)] += clip.guesses[indexOf(clip.trueFabric)];
+  for (const ClipGuesses& clip : analysis.clips)
+    right[indexOf(clip.trueFabric)] += clip.guesses[indexOf(clip.trueFabric)];
   EXPECT_EQ(right, (std::array<int, 4>{11, 12, 7, 8}));
   // Table 4.13.
   EXPECT_EQ(analysis.fabricFriedman.blocks, 14);
@@ -151,8 +152,9 @@ std::string errorFor(const fs::path& file) {
 TEST_F(StudyAnswersFile, MistakesNameTheFileLineAndField) {
   const std::string header = "participant,clip,true_fabric,true_group,guessed_fabric,guessed_group\n";
   const fs::path unknownFabric = write("fabric.csv", header + "a,c1,denim,stiff,denim,\na,c2,silk,stiff,denim,\n");
-  EXPECT_EQ(errorFor(unknownFabric), unknownFabric.string() +
-                                         ": line 3: true_fabric: unknown fabric 'silk' (expected denim, t-shirt, pants or swimsuit)");
+  EXPECT_EQ(errorFor(unknownFabric),
+            unknownFabric.string() +
+                ": line 3: true_fabric: unknown fabric 'silk' (expected denim, t-shirt, pants or swimsuit)");
   const fs::path shortRow = write("short.csv", header + "\n# a comment\na,c1,denim,stiff\n");
   EXPECT_EQ(errorFor(shortRow), shortRow.string() + ": line 4: malformed row: 4 fields, the header has 6");
   const fs::path missingColumn = write("missing.csv", "participant,clip,true_fabric,true_group,guessed_fabric\n");
@@ -162,12 +164,15 @@ TEST_F(StudyAnswersFile, MistakesNameTheFileLineAndField) {
             wrongGroup.string() + ": line 2: true_group: stiff disagrees with true_fabric swimsuit, which is stretchy");
   const fs::path badGuessGroup = write("guess.csv", header + "a,c1,denim,stiff,denim,bouncy\n");
   EXPECT_EQ(errorFor(badGuessGroup),
-            badGuessGroup.string() + ": line 2: guessed_group: unknown elasticity group 'bouncy' (expected stiff or stretchy)");
+            badGuessGroup.string() +
+                ": line 2: guessed_group: unknown elasticity group 'bouncy' (expected stiff or stretchy)");
   const fs::path twice = write("twice.csv", header + "a,c1,denim,stiff,denim,\na,c1,denim,stiff,pants,\n");
   EXPECT_EQ(errorFor(twice), twice.string() + ": line 3: clip: participant 'a' already answered clip 'c1'");
   const fs::path incomplete = write("incomplete.csv", header + "a,c1,denim,stiff,denim,\n");
-  EXPECT_EQ(errorFor(incomplete), incomplete.string() +
-                                      ": participant a: no answer for a t-shirt clip; the tests compare every fabric within each participant");
+  EXPECT_EQ(
+      errorFor(incomplete),
+      incomplete.string() +
+          ": participant a: no answer for a t-shirt clip; the tests compare every fabric within each participant");
   EXPECT_EQ(errorFor(root_ / "absent.csv"), (root_ / "absent.csv").string() + ": cannot open the file");
 }
 
@@ -188,15 +193,19 @@ TEST_F(StudyAnswersFile, CommandPrintsTablesWritesJsonAndRejectsBadInput) {
     return text.str();
   };
   ASSERT_EQ(run(answers), 0) << logText();
-  EXPECT_NE(logText().find("chi-squared = 1.366 (tie-corrected; 1.093 without), df = 3, asymptotic p = 0.714"), std::string::npos) << logText();
+  EXPECT_NE(logText().find("chi-squared = 1.366 (tie-corrected; 1.093 without), df = 3, asymptotic p = 0.714"),
+            std::string::npos)
+      << logText();
   EXPECT_NE(logText().find("W+ = 28.0, W- = 0.0, Z = 2.646, asymptotic p = 0.008"), std::string::npos) << logText();
   const nlohmann::json numbers = nlohmann::json::parse(std::ifstream(json));
   EXPECT_NEAR(numbers["friedman_fabric"]["statistic"].get<double>(), 1.366, 0.0005);
   EXPECT_NEAR(numbers["wilcoxon_fabric_vs_group"]["denim"]["asymptotic_p"].get<double>(), 0.008, 0.0005);
 
-  const fs::path bad = write("bad.csv", "participant,clip,true_fabric,true_group,guessed_fabric,guessed_group\na,c1,linen,stiff,denim,\n");
+  const fs::path bad = write(
+      "bad.csv", "participant,clip,true_fabric,true_group,guessed_fabric,guessed_group\na,c1,linen,stiff,denim,\n");
   EXPECT_EQ(run(bad), 2);
-  EXPECT_NE(logText().find(bad.string() + ": line 2: true_fabric: unknown fabric 'linen'"), std::string::npos) << logText();
+  EXPECT_NE(logText().find(bad.string() + ": line 2: true_fabric: unknown fabric 'linen'"), std::string::npos)
+      << logText();
 }
 
 }  // namespace

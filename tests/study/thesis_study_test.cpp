@@ -12,8 +12,8 @@
 #include <vector>
 
 #include "study/friedman_test.h"
-#include "study/wilcoxon_test.h"
 #include "study/thesis_tables.h"
+#include "study/wilcoxon_test.h"
 
 namespace weft::study {
 namespace {
@@ -79,8 +79,8 @@ TEST(StudyThesis, WilcoxonOnTable4_15ReproducesTable4_16) {
   EXPECT_EQ(result.ties, 8);
   expectPrints(result.positiveRankSum, 3.0, 1);  // Table 4.16: test statistic 3.0
   expectPrints(result.negativeRankSum, 18.0, 1);
-  expectPrints(result.z, -1.667, 3);             // not printed in the thesis; SPSS's Z
-  expectPrints(result.asymptoticP, 0.096, 3);    // Table 4.16: asymptotic significance 0.096
+  expectPrints(result.z, -1.667, 3);           // not printed in the thesis; SPSS's Z
+  expectPrints(result.asymptoticP, 0.096, 3);  // Table 4.16: asymptotic significance 0.096
 }
 
 // Table 4.17 as printed gives mean ranks 2.25 / 2.50 / 2.61 / 2.64 and 1.657 (p = 0.647), where
@@ -135,12 +135,14 @@ TEST(StudyThesis, PerFabricWilcoxonTablesAreColumnsOfTables4_11And4_17) {
 }
 
 struct PrintedWilcoxon {
-  int positive;           // participants who did better by group (Figure 4.16 prints denim's N=7; the others' are cut off in the text)
-  double testStatistic;   // W+
+  int positive;  // participants who did better by group (Figure 4.16 prints denim's N=7; the others' are cut off in the
+                 // text)
+  double testStatistic;  // W+
   double asymptoticP;
 };
 
-void expectWilcoxonPrints(const std::vector<double>& fabric, const std::vector<double>& group, PrintedWilcoxon printed) {
+void expectWilcoxonPrints(const std::vector<double>& fabric, const std::vector<double>& group,
+                          PrintedWilcoxon printed) {
   const WilcoxonResult result = wilcoxonSignedRankTest(fabric, group);
   EXPECT_EQ(result.pairs, 14);
   EXPECT_EQ(result.positive, printed.positive);
