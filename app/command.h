@@ -24,6 +24,7 @@ Command addRunCommand(CLI::App& app);
 Command addValidateCommand(CLI::App& app);
 Command addBenchCommand(CLI::App& app);
 Command addEditCommand(CLI::App& app);
+Command addStudyAnalyzeCommand(CLI::App& app);
 
 // `weft` with no subcommand: `weft edit` on the default scene.
 int editDefaultScene();

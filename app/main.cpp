@@ -1,5 +1,6 @@
 // `weft`: the command-line entry point. It only parses the command line and hands over to one of
-// the commands (run_command.cpp, validate_command.cpp, bench_command.cpp, edit_command.cpp).
+// the commands (run_command.cpp, validate_command.cpp, bench_command.cpp, edit_command.cpp,
+// study_analyze_command.cpp).
 #include <exception>
 #include <iostream>
 #include <vector>
@@ -11,7 +12,7 @@ int main(int argc, char** argv) {
   CLI::App app{"Weft: anisotropic cloth simulation with measured fabrics", "weft"};
   app.require_subcommand(0, 1);
   const std::vector<Command> commands{addRunCommand(app), addValidateCommand(app), addBenchCommand(app),
-                                      addEditCommand(app)};
+                                      addEditCommand(app), addStudyAnalyzeCommand(app)};
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -8,7 +8,7 @@ PACKAGES=(
   libeigen3-dev libsuitesparse-dev nlohmann-json3-dev libcli11-dev libtinyobjloader-dev libgmp-dev
   libgtest-dev libbenchmark-dev
   libimgui-dev libglfw3-dev libegl-dev libgl-dev libgl1-mesa-dev libegl-mesa0 libgl1-mesa-dri
-  libstb-dev libpng-dev xvfb xauth xdotool x11-apps
+  libstb-dev libpng-dev libboost-dev xvfb xauth xdotool x11-apps
   clang
 )
 
