@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
 namespace weft {
 
@@ -67,51 +66,56 @@ void NonlocalStress::gather(const ClothMesh& mesh, int t, double reach) {
   }
 }
 
-void NonlocalStress::thin(int t, std::vector<Neighbour>& list) const {
+void NonlocalStress::thin(int t, std::vector<Neighbour>& list) {
   // Past the nearest kExactNeighbours (the walk goes out ring by ring), the disc is cut into
   // cells, kRings rings of equal area times kSectors sectors round t, and each cell's triangles are
   // read at one of them, the one nearest their weighted middle, with their summed weight: a
   // quadrature of the disc at the cells' spacing, whose reading points sit where the cells' weights
   // do, so a stress varying across the disc averages as the full list would.
-  constexpr int kRings = 6, kSectors = 32;
-  static_assert(kExactNeighbours + kRings * kSectors <= kMaxNeighbours);
+  constexpr int kRings = 6, kSectors = 32, kCells = kRings * kSectors;
+  static_assert(kExactNeighbours + kCells <= kMaxNeighbours);
   const Vec2 centre = centroid_[t];
+  const double inverseRadius2 = 1.0 / (radius_ * radius_);
   double inner2 = 0.0;  // the exact part's reach, squared, in units of the radius
   for (std::size_t k = 0; k < kExactNeighbours; ++k) {
-    inner2 = std::max(inner2, (centroid_[list[k].triangle] - centre).squaredNorm());
+    inner2 = std::max(inner2, (centroid_[list[k].triangle] - centre).squaredNorm() * inverseRadius2);
   }
-  inner2 = std::min(1.0, inner2 / (radius_ * radius_));
-  const auto cellOf = [&](int u) {
-    const Vec2 offset = centroid_[u] - centre;
-    const double d2 = offset.squaredNorm() / (radius_ * radius_);
-    // Equal-area rings between the exact part's reach and the radius.
-    const int ring = std::clamp(static_cast<int>(kRings * (d2 - inner2) / std::max(1e-12, 1.0 - inner2)), 0, kRings - 1);
-    const double turn = std::atan2(offset.y(), offset.x()) / (2.0 * std::numbers::pi) + 0.5;
-    const int sector = std::clamp(static_cast<int>(kSectors * turn), 0, kSectors - 1);
-    return ring * kSectors + sector;
-  };
-  std::vector<double> weight(kRings * kSectors, 0.0);
-  std::vector<Vec2> middle(kRings * kSectors, Vec2::Zero());
-  std::vector<int> reader(kRings * kSectors, kNone);
+  inner2 = std::min(inner2, 1.0 - 1e-9);
+  const double ringScale = kRings / (1.0 - inner2);
+  cellOf_.resize(list.size());
+  cellWeight_.assign(kCells, 0.0);
+  cellMiddle_.assign(kCells, Vec2::Zero());
+  cellReader_.assign(kCells, kNone);
   for (std::size_t k = kExactNeighbours; k < list.size(); ++k) {
-    const int cell = cellOf(list[k].triangle);
-    weight[cell] += list[k].weight;
-    middle[cell] += list[k].weight * centroid_[list[k].triangle];
+    const Vec2 offset = centroid_[list[k].triangle] - centre;
+    const int ring = std::clamp(static_cast<int>(ringScale * (offset.squaredNorm() * inverseRadius2 - inner2)), 0,
+                                kRings - 1);
+    // The sector from a pseudo-angle in [0, 4) that grows monotonically round the circle (the
+    // diamond angle): no arc tangent per triangle, and the cells' sizes need not be equal.
+    const double x = offset.x(), y = offset.y();
+    const double sum = std::abs(x) + std::abs(y);
+    const double p = sum > 0.0 ? (y >= 0.0 ? (x >= 0.0 ? y / sum : 2.0 - y / sum) : (x < 0.0 ? 2.0 - y / sum : 4.0 + y / sum))
+                               : 0.0;
+    const int sector = std::clamp(static_cast<int>(p * (kSectors / 4.0)), 0, kSectors - 1);
+    const int cell = ring * kSectors + sector;
+    cellOf_[k] = cell;
+    cellWeight_[cell] += list[k].weight;
+    cellMiddle_[cell] += list[k].weight * centroid_[list[k].triangle];
   }
-  for (int cell = 0; cell < kRings * kSectors; ++cell) {
-    if (weight[cell] > 0.0) middle[cell] /= weight[cell];
+  for (int cell = 0; cell < kCells; ++cell) {
+    if (cellWeight_[cell] > 0.0) cellMiddle_[cell] /= cellWeight_[cell];
   }
   for (std::size_t k = kExactNeighbours; k < list.size(); ++k) {
     const int u = list[k].triangle;
-    const int cell = cellOf(u);
-    if (reader[cell] == kNone ||
-        (centroid_[u] - middle[cell]).squaredNorm() < (centroid_[reader[cell]] - middle[cell]).squaredNorm()) {
-      reader[cell] = u;
+    const int cell = cellOf_[k];
+    if (cellReader_[cell] == kNone || (centroid_[u] - cellMiddle_[cell]).squaredNorm() <
+                                          (centroid_[cellReader_[cell]] - cellMiddle_[cell]).squaredNorm()) {
+      cellReader_[cell] = u;
     }
   }
   std::vector<Neighbour> thinned(list.begin(), list.begin() + kExactNeighbours);
-  for (int cell = 0; cell < kRings * kSectors; ++cell) {
-    if (reader[cell] != kNone) thinned.push_back({reader[cell], static_cast<float>(weight[cell])});
+  for (int cell = 0; cell < kCells; ++cell) {
+    if (cellReader_[cell] != kNone) thinned.push_back({cellReader_[cell], static_cast<float>(cellWeight_[cell])});
   }
   list = std::move(thinned);  // a list of its own length: the cap is about memory
 }

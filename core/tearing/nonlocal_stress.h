@@ -78,7 +78,7 @@ class NonlocalStress {
   // Triangle t's neighbourhood at `radius_` (its gather, lips left out) into `neighbours_[t]`.
   void buildNeighbours(const ClothMesh& mesh, int t);
   // A neighbourhood of triangle t longer than the cap, read at fewer points (nonlocal_stress.cpp).
-  void thin(int t, std::vector<Neighbour>& list) const;
+  void thin(int t, std::vector<Neighbour>& list);
   // `local`'s distinct components into packed_, which averageAt reads.
   void pack(const std::vector<Mat2>& local);
   Mat2 averageAt(const std::vector<Mat2>& local, int t) const;
@@ -98,6 +98,10 @@ class NonlocalStress {
   std::vector<int> stamp_;       // per triangle: the gather that last visited it
   int currentStamp_ = 0;
   std::vector<int> region_;      // the last gather, t first
+  std::vector<int> cellOf_;      // thin's scratch: per list entry its cell, and per cell its sums
+  std::vector<double> cellWeight_;
+  std::vector<Vec2> cellMiddle_;
+  std::vector<int> cellReader_;
   struct PackedStress {
     double xx, yy, xy;
   };
