@@ -125,7 +125,7 @@ void viewportMouse(editor::EditorSession& session, editor::EditorUi& ui, ui::Orb
   if (!overScene && !interaction.grabbing()) mouse.left = false;
   ui::MouseState forCamera = buttons;
   const bool taken = interaction.update(session, camera, mouse, {io.KeyAlt, io.KeyShift}, rect.width, rect.height,
-                                        ui.panels.tagMode && ui.panels.tool ? &*ui.panels.tool : nullptr);
+                                        ui.panels.tagMode ? ui.panels.tools.current() : nullptr);
   if (overScene && !taken) controls.update(camera, forCamera, win.height);
   if (const auto box = interaction.box()) {  // tag mode's Shift + drag
     const ImVec2 a(static_cast<float>((rect.x + box->x0) / scale), static_cast<float>((rect.y + box->y0) / scale));
@@ -209,9 +209,10 @@ int runEditor(const EditorOptions& options) {
       const std::shared_ptr<const editor::WorldSnapshot> shown = workspace.session().view();
       ui::RenderView view = shown->render;
       // In tag mode, the feature a click would toggle, highlighted before the click.
-      if (const auto& hovered = interaction.hovered(); hovered && ui.panels.tool &&
-                                                      ui.panels.tool->obstacle() < static_cast<int>(view.obstacles.size())) {
-        ui::ObstacleView& tool = view.obstacles[static_cast<std::size_t>(ui.panels.tool->obstacle())];
+      const editor::ToolTagEditor* tagged = ui.panels.tools.current();
+      if (const auto& hovered = interaction.hovered();
+          hovered && tagged != nullptr && tagged->obstacle() < static_cast<int>(view.obstacles.size())) {
+        ui::ObstacleView& tool = view.obstacles[static_cast<std::size_t>(tagged->obstacle())];
         if (hovered->isVertex()) {
           tool.highlightVertices.push_back(hovered->vertex);
         } else {

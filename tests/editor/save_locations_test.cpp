@@ -53,10 +53,9 @@ class SaveLocationsTest : public EditorPanelsTest {
     json scene = json::parse(in);
     scene["cloths"][0]["mesh"]["grid"]["resolution"] = json::array({8, 8});
     session_ = std::make_unique<EditorSession>(dir_.write("copied/sword-copy.json", scene.dump(2)));
-    ui_.panels.tool.emplace(*session_, 0);
-    ui_.panels.toolGeneration = session_->worldGeneration();
+    ui_.panels.tools.select(*session_, 0);
     const bool wasSharp = session_->world().obstacle(0).sharpVertex[kToggledVertex];
-    ui_.panels.tool->toggleVertex(*session_, kToggledVertex);
+    ui_.panels.tools.current()->toggleVertex(*session_, kToggledVertex);
     // The tools panel, grown and in front, so all its buttons are on screen.
     imgui_->frame([&] {
       ImGui::SetWindowPos("Tools", ImVec2(300, 300));
@@ -234,11 +233,11 @@ TEST_F(SaveLocationsTest, AToolsTagsCanLiveInTheSceneItself) {
 
   const json& tags = session_->json()["obstacles"][0]["shape"]["mesh"]["sharp_tags"];
   ASSERT_TRUE(tags.is_object()) << session_->status;
-  EXPECT_EQ(sharpTagsFromJson(tags).vertices, ui_.panels.tool->tags().vertices);
+  EXPECT_EQ(sharpTagsFromJson(tags).vertices, ui_.panels.tools.current()->tags().vertices);
   EXPECT_FALSE(fs::exists(dir_.path() / "copied" / "sword.sharp.json")) << "no file beside the scene";
   EXPECT_EQ(readText(shipped), shippedBefore) << "the shipped tags are untouched";
-  EXPECT_TRUE(ui_.panels.tool->inScene());
-  EXPECT_FALSE(ui_.panels.tool->document().dirty());
+  EXPECT_TRUE(ui_.panels.tools.current()->inScene());
+  EXPECT_FALSE(ui_.panels.tools.current()->document().dirty());
   EXPECT_TRUE(session_->dirty()) << "the tags are a scene edit, saved with the scene";
 
   session_->save();

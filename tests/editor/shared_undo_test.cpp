@@ -166,8 +166,7 @@ class SharedUndoPanels : public EditorPanelsTest {
     if (IsSkipped()) return;
     session_ = std::make_unique<EditorSession>(copyScene(dir_, "sword-into-sheet", 6));
     session_->paused = true;
-    ui_.panels.tool.emplace(*session_, 0);
-    ui_.panels.toolGeneration = session_->worldGeneration();
+    ui_.panels.tools.select(*session_, 0);
     edge_ = session_->world().obstacle(0).topology.edges.front();
     startTagged_ = edgeTagged();
     g0_ = session_->scene().forces.gravity.y();
@@ -176,14 +175,14 @@ class SharedUndoPanels : public EditorPanelsTest {
     imgui_->frame(drawUi());
   }
   bool edgeTagged() const {
-    for (const auto& e : ui_.panels.tool->tags().edges) {
+    for (const auto& e : ui_.panels.tools.current()->tags().edges) {
       if (e == edge_) return true;
     }
     return false;
   }
   // A tag clicked, then a parameter edited: what an artist does before pressing Ctrl+Z twice.
   void tagThenEditGravity() {
-    ui_.panels.tool->toggleEdge(*session_, edge_);
+    ui_.panels.tools.current()->toggleEdge(*session_, edge_);
     ASSERT_TRUE(session_->edit(editor::withGravity(session_->json(), Vec3(0.0, -3.0, 0.0)), "gravity").accepted);
     ASSERT_NE(edgeTagged(), startTagged_);
     imgui_->frame(drawUi());

@@ -3,7 +3,9 @@
 #include <imgui.h>
 
 #include <filesystem>
+#include <string>
 #include <system_error>
+#include <vector>
 
 #include "editor/editor_viewport.h"
 #include "editor/menu_bar.h"
@@ -55,28 +57,45 @@ void drawStartHint(const EditorSession& session) {
 // What the user chose at an unsaved-changes prompt.
 enum class UnsavedChoice { Undecided, Proceed, Cancel };
 
-// Unsaved edits are saved or given up on purpose before the document is left (quit, open
-// another scene). Proceed: saved, discarded, or nothing to save. A failed save cancels.
-UnsavedChoice askAboutUnsavedEdits(EditorSession& session, const char* title, const char* saveLabel,
+// "sword, knife"
+std::string joined(const std::vector<std::string>& names) {
+  std::string text;
+  for (const std::string& name : names) text += (text.empty() ? "" : ", ") + name;
+  return text;
+}
+
+// Unsaved edits, the scene's and the tools' sharp tags (kept in files of their own), are saved or
+// given up on purpose before the document is left (quit, open another scene). Proceed: saved,
+// discarded, or nothing to save. A failed save cancels.
+UnsavedChoice askAboutUnsavedEdits(EditorSession& session, PanelState& panels, const char* title, const char* saveLabel,
                                    const char* discardLabel) {
-  if (!session.dirty()) return UnsavedChoice::Proceed;
+  const std::vector<std::string> tagged = panels.tools.unsavedToolNames();
+  if (!session.dirty() && tagged.empty()) return UnsavedChoice::Proceed;
   UnsavedChoice choice = UnsavedChoice::Undecided;
   ImGui::OpenPopup(title);
   if (ImGui::BeginPopupModal(title, nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
-    ImGui::Text("%s has unsaved changes.", session.document().file().filename().string().c_str());
+    if (session.dirty()) ImGui::Text("%s has unsaved changes.", session.document().file().filename().string().c_str());
+    if (!tagged.empty()) {
+      ImGui::Text("The sharp tags of %s are not saved.", joined(tagged).c_str());
+      ImGui::TextUnformatted("(Save puts them where the Tools panel's Save tags does; a shipped tool's, beside the scene.)");
+    }
     if (ImGui::Button(saveLabel)) {
       try {
-        session.save();
+        panels.tools.saveUnsaved(session);  // first: tags kept in or beside the scene edit it
+        if (session.dirty()) session.save();
         choice = UnsavedChoice::Proceed;
       } catch (const std::exception& e) {
         session.status = e.what();
         choice = UnsavedChoice::Cancel;
       }
     }
+    recordWidget(panels, "unsaved/save");
     ImGui::SameLine();
     if (ImGui::Button(discardLabel)) choice = UnsavedChoice::Proceed;
+    recordWidget(panels, "unsaved/discard");
     ImGui::SameLine();
     if (ImGui::Button("Cancel") || escapePressed()) choice = UnsavedChoice::Cancel;
+    recordWidget(panels, "unsaved/cancel");
     if (choice != UnsavedChoice::Undecided) ImGui::CloseCurrentPopup();
     ImGui::EndPopup();
   }
@@ -85,7 +104,7 @@ UnsavedChoice askAboutUnsavedEdits(EditorSession& session, const char* title, co
 
 void drawQuitPrompt(EditorSession& session, EditorUi& ui) {
   if (ui.quit != QuitPrompt::Asking) return;
-  switch (askAboutUnsavedEdits(session, "Unsaved changes", "Save and quit", "Discard and quit")) {
+  switch (askAboutUnsavedEdits(session, ui.panels, "Unsaved changes", "Save and quit", "Discard and quit")) {
     case UnsavedChoice::Proceed: ui.quit = QuitPrompt::Confirmed; break;
     case UnsavedChoice::Cancel: ui.quit = QuitPrompt::None; break;
     case UnsavedChoice::Undecided: break;
@@ -95,7 +114,7 @@ void drawQuitPrompt(EditorSession& session, EditorUi& ui) {
 void drawOpenPrompt(EditorSession& session, EditorUi& ui) {
   if (ui.panels.openRequest.empty() || ui.open == OpenPrompt::Confirmed) return;
   ui.open = OpenPrompt::Asking;
-  switch (askAboutUnsavedEdits(session, "Open another scene", "Save, then open", "Discard them, open")) {
+  switch (askAboutUnsavedEdits(session, ui.panels, "Open another scene", "Save, then open", "Discard them, open")) {
     case UnsavedChoice::Proceed: ui.open = OpenPrompt::Confirmed; break;
     case UnsavedChoice::Cancel:
       ui.open = OpenPrompt::None;

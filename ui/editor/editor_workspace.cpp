@@ -97,7 +97,7 @@ bool EditorWorkspace::applyChoices(EditorUi& ui) {
       }
       ui.panels.cloth = 0;
       ui.panels.obstacle = -1;
-      ui.panels.tool.reset();
+      ui.panels.tools.clear();  // their unsaved tags were saved or discarded at the prompt
       replaced = true;
     } catch (const InputError& e) {
       session_->status = std::string("cannot open: ") + e.what();

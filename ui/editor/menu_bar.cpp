@@ -49,7 +49,7 @@ void drawEditMenu(EditorSession& session, PanelState& state) {
   const bool open = ImGui::BeginMenu("Edit");
   recordWidget(state, "menu/edit");
   if (!open) return;
-  ToolTagEditor* tool = state.tool ? &*state.tool : nullptr;
+  ToolTagEditor* tool = state.tools.current();
   if (ImGui::MenuItem(("Undo " + latestUndoLabel(session, tool)).c_str(), "Ctrl+Z", false, canUndoLatest(session, tool))) {
     undoLatest(session, tool);
   }
@@ -140,7 +140,7 @@ void drawHelp(EditorUi& ui) {
 void applyEditShortcuts(EditorSession& session, PanelState& state) {
   const ImGuiIO& io = ImGui::GetIO();
   if (!io.KeyCtrl) return;
-  ToolTagEditor* tool = state.tool ? &*state.tool : nullptr;
+  ToolTagEditor* tool = state.tools.current();
   // Shift+Z is checked before Z alone: with Shift held, Ctrl+Z redoes (as in most editors).
   if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Z))) {
     if (io.KeyShift) {

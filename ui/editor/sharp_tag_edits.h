@@ -43,6 +43,7 @@ class ToolTagEditor {
   ToolTagEditor(const EditorSession& session, int obstacle);
 
   int obstacle() const { return obstacle_; }
+  const std::string& name() const { return name_; }  // the obstacle's, as the scene names it
   SharpTags tags() const { return sharpTagsFromJson(document_.json()); }
   const JsonDocument& document() const { return document_; }
 

@@ -13,6 +13,7 @@
 #include "editor/editor_settings.h"
 #include "editor/headless_recorder.h"
 #include "editor/sharp_tag_edits.h"
+#include "editor/tool_tag_editors.h"
 
 namespace weft::editor {
 
@@ -41,8 +42,7 @@ struct PanelState {
   EditorSettings settings;       // remembered between runs (the app loads and saves them)
   bool tagsDialog = false;       // the tools panel asks where the tags of a shipped tool go
   double sharperThanDeg = 60.0;  // the tools panel's "tag edges sharper than" angle
-  std::optional<ToolTagEditor> tool;  // the tool whose sharp tags the tools panel edits
-  int toolGeneration = -1;            // the world generation its tags were applied to
+  ToolTagEditors tools;               // the tools' sharp tags; current() is the one the tools panel edits
   bool tagMode = false;               // clicks on the tool in the viewport toggle sharp tags
   bool throwBallRequested = false;    // the app throws one from the camera this frame
   HeadlessRecorder* recorder = nullptr;  // playback's "record" (owned by the app; none: no recording)

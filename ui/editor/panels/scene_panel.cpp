@@ -96,7 +96,7 @@ void drawObjects(EditorSession& session, PanelState& state) {
   if (ImGui::SmallButton("Remove")) {
     const int removed = state.obstacle;
     state.obstacle = -1;
-    if (state.tool && state.tool->obstacle() == removed) state.tool.reset();
+    state.tools.forget(removed);
     tryEdit(session, [&] { return withoutObstacle(session.json(), removed); }, "remove obstacle");
   }
   ImGui::EndDisabled();
@@ -131,7 +131,7 @@ void drawScenePanel(EditorSession& session, PanelState& state) {
   recordWidget(state, "scene/save");
   ImGui::SameLine();
   // The editor's one history (shared_undo.h): a sharp tag clicked last is undone here too.
-  ToolTagEditor* tool = state.tool ? &*state.tool : nullptr;
+  ToolTagEditor* tool = state.tools.current();
   ImGui::BeginDisabled(!canUndoLatest(session, tool));
   if (ImGui::Button("Undo")) undoLatest(session, tool);
   recordWidget(state, "scene/undo");

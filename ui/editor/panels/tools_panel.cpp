@@ -3,6 +3,7 @@
 // with Weft, beside the scene unless the user says to change the shipped file; throw a ball from
 // the camera.
 #include <string>
+#include <vector>
 
 #include "panels.h"
 #include "editor/shared_undo.h"
@@ -35,10 +36,10 @@ void saveTags(EditorSession& session, ToolTagEditor& tool, TagsGoTo where) {
 void drawTagsDialog(EditorSession& session, PanelState& state) {
   if (state.tagsDialog) ImGui::OpenPopup("Save sharp tags");
   if (!ImGui::BeginPopupModal("Save sharp tags", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
-  const std::filesystem::path shipped = state.tool->document().file();
+  ToolTagEditor& tool = *state.tools.current();
+  const std::filesystem::path shipped = tool.document().file();
   ImGui::TextWrapped("%s is a tool shipped with Weft; its tags file %s is used by every scene with this tool.",
-                     session.scene().obstacles[static_cast<std::size_t>(state.tool->obstacle())].name.c_str(),
-                     shipped.string().c_str());
+                     tool.name().c_str(), shipped.string().c_str());
   // A scene shipped with Weft lives among Weft's own files: nothing goes beside it.
   const bool sceneShipped = session.savesIntoInstalledData();
   if (sceneShipped) {
@@ -47,20 +48,20 @@ void drawTagsDialog(EditorSession& session, PanelState& state) {
   }
   ImGui::BeginDisabled(sceneShipped);
   if (ImGui::Button("Save beside this scene")) {
-    saveTags(session, *state.tool, TagsGoTo::BesideScene);
+    saveTags(session, tool, TagsGoTo::BesideScene);
     state.tagsDialog = false;
   }
   ImGui::EndDisabled();
   recordWidget(state, "tools/savebesidescene");
   ImGui::SameLine();
   if (ImGui::Button("Keep them in this scene")) {
-    saveTags(session, *state.tool, TagsGoTo::InScene);
+    saveTags(session, tool, TagsGoTo::InScene);
     state.tagsDialog = false;
   }
   recordWidget(state, "tools/saveinscene");
   ImGui::SameLine();
   if (ImGui::Button("Change the shipped file")) {
-    saveTags(session, *state.tool, TagsGoTo::ToolFile);
+    saveTags(session, tool, TagsGoTo::ToolFile);
     state.tagsDialog = false;
   }
   recordWidget(state, "tools/saveshipped");
@@ -70,9 +71,22 @@ void drawTagsDialog(EditorSession& session, PanelState& state) {
   ImGui::EndPopup();
 }
 
+// After a reset the world's tools hold their files' tags again: every tool's unsaved tags go back
+// in, whether or not the panel is open.
+void reapplyTagsAfterReset(EditorSession& session, PanelState& state) {
+  if (session.resetPending()) return;  // the world is not rebuilt yet
+  const std::vector<std::string> dropped = state.tools.reapplyAfterReset(session);
+  if (!dropped.empty()) {
+    std::string names;
+    for (const std::string& name : dropped) names += (names.empty() ? "" : ", ") + name;
+    session.status = names + (dropped.size() == 1 ? " is" : " are") + " gone from the scene; the unsaved tags were dropped";
+  }
+}
+
 }  // namespace
 
 void drawToolsPanel(EditorSession& session, PanelState& state) {
+  reapplyTagsAfterReset(session, state);
   if (!ImGui::Begin("Tools")) {
     ImGui::End();
     return;
@@ -86,51 +100,44 @@ void drawToolsPanel(EditorSession& session, PanelState& state) {
     ImGui::End();
     return;
   }
-  if (state.tool && state.tool->obstacle() >= static_cast<int>(obstacles.size())) state.tool.reset();
-  const std::string current = state.tool ? obstacles[static_cast<std::size_t>(state.tool->obstacle())].name : "(none)";
+  if (state.tools.current() && state.tools.current()->obstacle() >= static_cast<int>(obstacles.size())) {
+    state.tools.deselect();
+  }
+  // Picking another tool keeps this one's unsaved tags and undo steps (tool_tag_editors.h).
+  const std::string current = state.tools.current() ? state.tools.current()->name() : "(none)";
   ImGui::SetNextItemWidth(200);
   if (ImGui::BeginCombo("tool", current.c_str())) {
     for (int i = 0; i < static_cast<int>(obstacles.size()); ++i) {
       const std::string& name = obstacles[static_cast<std::size_t>(i)].name;
-      if (ImGui::Selectable(name.c_str(), state.tool && state.tool->obstacle() == i)) {
+      if (ImGui::Selectable(name.c_str(), state.tools.current() && state.tools.current()->obstacle() == i)) {
         try {
-          state.tool.emplace(session, i);
-          state.toolGeneration = session.worldGeneration();
+          state.tools.select(session, i);
         } catch (const std::exception& e) {
-          state.tool.reset();
+          state.tools.deselect();
           session.status = e.what();
         }
       }
+      recordWidget(state, "tools/tool" + std::to_string(i));
     }
     ImGui::EndCombo();
   }
   recordWidget(state, "tools/tool");
 
-  if (state.tool) {
-    if (state.toolGeneration != session.worldGeneration()) {
-      if (!state.tool->reapply(session)) {
-        session.status = "the tool being tagged is gone from the scene; its unsaved tags were dropped";
-        state.tool.reset();
-        ImGui::End();
-        return;
-      }
-      state.toolGeneration = session.worldGeneration();
-    }
-    const SharpTags tags = state.tool->tags();
+  if (ToolTagEditor* tool = state.tools.current()) {
+    const SharpTags tags = tool->tags();
     ImGui::Text("%zu sharp vertices, %zu sharp edges", tags.vertices.size(), tags.edges.size());
-    ImGui::TextWrapped("tags file: %s%s", state.tool->document().file().string().c_str(),
-                       state.tool->document().dirty() ? " (unsaved)" : "");
+    ImGui::TextWrapped("tags file: %s%s", tool->document().file().string().c_str(),
+                       tool->document().dirty() ? " (unsaved)" : "");
     ImGui::Checkbox("click the tool to tag sharp", &state.tagMode);
     recordWidget(state, "tools/tagmode");
     // Blades: every edge where the faces fold more than the angle, in one step.
-    if (ImGui::Button("Tag edges sharper than")) state.tool->tagEdgesSharperThan(session, state.sharperThanDeg);
+    if (ImGui::Button("Tag edges sharper than")) tool->tagEdgesSharperThan(session, state.sharperThanDeg);
     recordWidget(state, "tools/sharperthan");
     ImGui::SameLine();
     ImGui::SetNextItemWidth(60);
     ImGui::InputDouble("deg", &state.sharperThanDeg, 0.0, 0.0, "%.0f", ImGuiInputTextFlags_AutoSelectAll);
     // The editor's one history (shared_undo.h), as Ctrl+Z: a tag's own undo here would take back
     // an older tag while a newer parameter edit stays, an order no other Undo follows.
-    ToolTagEditor* tool = &*state.tool;
     ImGui::BeginDisabled(!canUndoLatest(session, tool));
     if (ImGui::Button("Undo")) undoLatest(session, tool);
     if (ImGui::IsItemHovered() && canUndoLatest(session, tool)) ImGui::SetTooltip("undo %s (Ctrl+Z)", latestUndoLabel(session, tool).c_str());
@@ -144,18 +151,18 @@ void drawToolsPanel(EditorSession& session, PanelState& state) {
     ImGui::EndDisabled();
     ImGui::SameLine();
     if (ImGui::Button("Save tags")) {
-      if (state.tool->inScene()) {
-        saveTags(session, *state.tool, TagsGoTo::InScene);
-      } else if (state.tool->savesIntoInstalledData()) {
+      if (tool->inScene()) {
+        saveTags(session, *tool, TagsGoTo::InScene);
+      } else if (tool->savesIntoInstalledData()) {
         state.tagsDialog = true;
       } else {
-        saveTags(session, *state.tool, TagsGoTo::ToolFile);
+        saveTags(session, *tool, TagsGoTo::ToolFile);
       }
     }
     recordWidget(state, "tools/save");
-    if (!state.tool->inScene()) {
+    if (!tool->inScene()) {
       ImGui::SameLine();
-      if (ImGui::Button("In the scene")) saveTags(session, *state.tool, TagsGoTo::InScene);
+      if (ImGui::Button("In the scene")) saveTags(session, *tool, TagsGoTo::InScene);
       recordWidget(state, "tools/inscene");
     }
     drawTagsDialog(session, state);

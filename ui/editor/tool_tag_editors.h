@@ -1,0 +1,54 @@
+#pragma once
+// The sharp tags of every tool the user has tagged while this scene is open: one ToolTagEditor per
+// obstacle, kept until the scene is left. Picking another tool in the Tools panel only changes
+// which one is current, so the first tool's unsaved tags and their undo steps are still there when
+// it is picked again (the product rule: the editor never loses a user's edits). The current one is
+// what the Tools panel, the viewport's tag clicks and the shared Undo (shared_undo.h) work on; the
+// unsaved-changes prompts (quit, open another scene) ask about all of them.
+#include <map>
+#include <string>
+#include <vector>
+
+#include "editor/editor_session.h"
+#include "editor/sharp_tag_edits.h"
+
+namespace weft::editor {
+
+class ToolTagEditors {
+ public:
+  ToolTagEditor* current();  // none: no tool picked
+  const ToolTagEditor* current() const;
+
+  // Makes the tool at `obstacle` current: its kept editor, or a new one read from the world.
+  // Throws as ToolTagEditor's constructor does (a generated shape); then nothing changes.
+  ToolTagEditor& select(const EditorSession& session, int obstacle);
+  void deselect();  // no tool is current; every editor is kept
+  // The obstacle was removed from the scene: its editor goes with it.
+  void forget(int obstacle);
+  void clear();  // another scene was opened: the prompt settled every unsaved tag first
+
+  // After a reset (the world rebuilt, its obstacles holding the files' tags again): every kept
+  // editor's tags are put back into the world, as the user left them (ToolTagEditor::reapply).
+  // An editor whose tool is gone from the scene is dropped; returns the names of those that held
+  // unsaved tags.
+  std::vector<std::string> reapplyAfterReset(EditorSession& session);
+
+  // The tools whose tags were edited and are not saved (in their file or in the scene), by name.
+  std::vector<std::string> unsavedToolNames() const;
+  // Saves those tags where the Tools panel's "Save tags" would, without asking: in the scene when
+  // they live there, beside the scene for a tool shipped with Weft (its file is shared by other
+  // scenes), else in the tool's tags file. A tool kept in or beside the scene edits the scene,
+  // which the caller saves next. Throws on the first that cannot be saved (those before it are).
+  void saveUnsaved(EditorSession& session);
+
+ private:
+  struct Kept {
+    Kept(const EditorSession& session, int obstacle) : editor(session, obstacle), worldGeneration(session.worldGeneration()) {}
+    ToolTagEditor editor;
+    int worldGeneration;  // the world its tags were last applied to (EditorSession::worldGeneration)
+  };
+  std::map<int, Kept> kept_;  // by obstacle index
+  int current_ = -1;          // the current tool's obstacle index (-1: none)
+};
+
+}  // namespace weft::editor
