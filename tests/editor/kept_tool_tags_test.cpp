@@ -140,6 +140,20 @@ TEST_F(KeptToolTagsTest, TheQuitPromptAsksAboutUnsavedTagsAndSaveWritesTheirFile
   EXPECT_FALSE(currentTool()->document().dirty());
 }
 
+// Esc asks to quit (app/editor_app.cpp sets the prompt going in the frame of the press): with
+// unsaved tags the prompt must then stay up, and a second Esc answers it as Cancel.
+TEST_F(KeptToolTagsTest, EscWithUnsavedTagsOpensTheQuitPromptAndASecondEscCancelsIt) {
+  tagTheSwordUnsaved();
+  ui_.quit = QuitPrompt::Asking;  // what the Esc below asked for, in its own frame
+  imgui_->tap(test::HeadlessImGui::kEscapeKey, drawUi());
+  imgui_->frame(drawUi());
+  EXPECT_EQ(ui_.quit, QuitPrompt::Asking) << "the Esc that opened the prompt must not also cancel it";
+  EXPECT_TRUE(aPromptIsOpen());
+  imgui_->tap(test::HeadlessImGui::kEscapeKey, drawUi());
+  EXPECT_EQ(ui_.quit, QuitPrompt::None);
+  EXPECT_TRUE(currentTool()->document().dirty());
+}
+
 TEST_F(KeptToolTagsTest, CancelAtTheQuitPromptKeepsTheTagsAndDiscardWritesNothing) {
   tagTheSwordUnsaved();
   ui_.quit = QuitPrompt::Asking;

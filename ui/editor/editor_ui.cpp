@@ -39,8 +39,12 @@ void drawStatusBar(const EditorSession& session) {
   ImGui::End();
 }
 
-// Esc answers the open prompt (as its Cancel or Later button) instead of quitting the editor.
-bool escapePressed() { return ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false); }
+// Esc answers the open prompt (as its Cancel or Later button) instead of quitting the editor. Not
+// in the frame the prompt appears: the Esc that asked to quit opened the quit prompt, and would
+// otherwise cancel it in the same frame, so Esc with unsaved edits did nothing at all.
+bool escapePressed() {
+  return !ImGui::IsWindowAppearing() && ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false);
+}
 
 // A scene opens paused at t = 0; one line over the viewport says what to press.
 void drawStartHint(const EditorSession& session) {
