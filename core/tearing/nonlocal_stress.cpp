@@ -15,7 +15,7 @@ constexpr double kPatchReach = 1.25;
 // A neighbourhood holds at most this many triangles. The disc holds (radius / edge)^2 triangles or
 // so, which a mesh much finer than the radius makes unbounded: the default 6.5 cm over a 1 m sheet
 // holds about 100 at 64 x 64 but 1,700 at 256 x 256 and 26,000 at 1024 x 1024 (440 GB of lists).
-// Past the cap the list is thinned (see buildNeighbours): the cost and memory of an average stay
+// Past the cap the list is thinned (see thin): the cost and memory of an average stay
 // bounded while it still reads the whole disc.
 constexpr std::size_t kMaxNeighbours = 256;
 // The nearest triangles of a thinned list, kept one by one: a crack tip's singular stress is read
@@ -159,25 +159,19 @@ Mat2 NonlocalStress::averageAt(const std::vector<Mat2>& local, int t) const {
   // wait on each addition before the next (four cycles a neighbour); four independent ones let
   // the additions overlap. The order is fixed, so a cached average still equals a fresh one.
   const std::vector<Neighbour>& list = neighbours_[t];
-  const std::size_t count = list.size();
   double xx[4] = {0.0, 0.0, 0.0, 0.0}, yy[4] = {0.0, 0.0, 0.0, 0.0}, xy[4] = {0.0, 0.0, 0.0, 0.0};
-  std::size_t i = 0;
-  for (; i + 4 <= count; i += 4) {
-    for (int k = 0; k < 4; ++k) {
-      const PackedStress& s = packed_[list[i + k].triangle];
-      const double w = list[i + k].weight;
-      xx[k] += w * s.xx;
-      yy[k] += w * s.yy;
-      xy[k] += w * s.xy;
-    }
-  }
-  for (int k = 0; i < count; ++i, ++k) {
-    const PackedStress& s = packed_[list[i].triangle];
-    const double w = list[i].weight;
+  const auto add = [&](int k, const Neighbour& n) {
+    const PackedStress& s = packed_[n.triangle];
+    const double w = n.weight;
     xx[k] += w * s.xx;
     yy[k] += w * s.yy;
     xy[k] += w * s.xy;
+  };
+  std::size_t i = 0;
+  for (; i + 4 <= list.size(); i += 4) {
+    for (int k = 0; k < 4; ++k) add(k, list[i + k]);
   }
+  for (int k = 0; i < list.size(); ++i, ++k) add(k, list[i]);
   const double sumXX = (xx[0] + xx[1]) + (xx[2] + xx[3]);
   const double sumYY = (yy[0] + yy[1]) + (yy[2] + yy[3]);
   const double sumXY = (xy[0] + xy[1]) + (xy[2] + xy[3]);
