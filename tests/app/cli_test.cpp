@@ -401,6 +401,37 @@ TEST_F(WeftCli, BenchWritesACsvNamingTheMachine) {
   EXPECT_NE(lines[3].find(",true,"), std::string::npos) << "the chosen substeps should keep it stable: " << lines[3];
 }
 
+// The tearing benchmark reports the steps that tore apart from the median step: they carry the
+// surgery and the patched stress, so they are a live demo's slowest frames.
+TEST_F(WeftCli, TearingBenchReportsTheStepsThatToreApart) {
+  const Result r = weft("bench --tearing --tearing-resolution 16 --tearing-rows growth --steps 20 --repeats 2 "
+                        "--tearing-csv tearing.csv");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  std::ifstream csv(work() / "tearing.csv");
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(csv, line);) lines.push_back(line);
+  ASSERT_EQ(lines.size(), 3u) << r.output;  // machine line, header, the growth row
+  std::vector<std::string> header, row;
+  for (auto [line, fields] : {std::pair{&lines[1], &header}, std::pair{&lines[2], &row}}) {
+    std::stringstream in(*line);
+    for (std::string field; std::getline(in, field, ',');) fields->push_back(field);
+  }
+  ASSERT_EQ(header.size(), row.size()) << lines[1] << "\n" << lines[2];
+  std::map<std::string, double> value;
+  for (std::size_t k = 0; k < header.size(); ++k) {
+    if (k >= 5) value[header[k]] = std::stod(row[k]);
+  }
+  ASSERT_TRUE(value.contains("tearing_steps_per_repeat")) << lines[1];
+  // The window holds the pulled sheet's first tears at every resolution (README, crack growth).
+  EXPECT_GE(value["tearing_steps_per_repeat"], 1.0) << lines[2];
+  EXPECT_LE(value["tearing_steps_per_repeat"], 20.0) << lines[2];
+  EXPECT_GT(value["tears_per_repeat"], 0.0) << lines[2];
+  EXPECT_GT(value["median_tearing_step_tearing_ms"], 0.0) << lines[2];
+  EXPECT_GE(value["median_tearing_step_ms"], value["median_tearing_step_tearing_ms"]) << lines[2];
+  EXPECT_GT(value["window_tearing_share"], 0.0) << lines[2];
+  EXPECT_LT(value["window_tearing_share"], 1.0) << lines[2];
+}
+
 TEST_F(WeftCli, AccuracyStudyReportsErrorsThatShrinkWithEachKnob) {
   const Result r = weft("bench --accuracy --accuracy-resolution 5 --accuracy-duration 0.1 --accuracy-csv acc.csv");
   ASSERT_EQ(r.exitCode, 0) << r.output;
