@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -65,6 +66,15 @@ std::string firstFrame(const fs::path& video) {
   return read(raw);
 }
 
+// The mean absolute difference of two RGBA images' bytes (0..255); 255 for different sizes.
+double meanDifference(const std::string& a, const std::string& b) {
+  if (a.size() != b.size() || a.empty()) return 255.0;
+  double sum = 0.0;
+  for (std::size_t i = 0; i < a.size(); ++i)
+    sum += std::abs(static_cast<int>(static_cast<unsigned char>(a[i])) - static_cast<int>(static_cast<unsigned char>(b[i])));
+  return sum / static_cast<double>(a.size());
+}
+
 // Tiny clips, rendered once for the suite: 32 x 24 pixels, 0.1 s (3 frames) per part.
 class StudyVideos : public ::testing::Test {
  protected:
@@ -118,15 +128,17 @@ TEST_F(StudyVideos, WritesATexturedAndAHiddenClipPerFabricAndAManifest) {
   EXPECT_EQ(j["clips"][7]["material"], "white-swim-solid");
 }
 
-TEST_F(StudyVideos, HiddenClipsStartIdenticalAndTexturedOnesDoNot) {
+TEST_F(StudyVideos, HiddenClipsStartAlikeAndTexturedOnesDoNot) {
   // At t = 0 every fabric hangs at rest in the same place: with the texture hidden the pictures
-  // are the same, with it shown the colours tell the fabrics apart.
+  // are the same up to the encoder (x264 sets a frame's quantizers looking at the frames after it,
+  // which differ), with it shown the colours tell the fabrics apart.
   const std::string denimHidden = firstFrame(clips() / "denim-hidden.mp4");
   ASSERT_EQ(denimHidden.size(), 32u * 24u * 4u);
-  EXPECT_EQ(firstFrame(clips() / "swimsuit-hidden.mp4"), denimHidden);
-  EXPECT_EQ(firstFrame(clips() / "t-shirt-hidden.mp4"), denimHidden);
-  EXPECT_NE(firstFrame(clips() / "denim-textured.mp4"), firstFrame(clips() / "swimsuit-textured.mp4"));
-  EXPECT_NE(firstFrame(clips() / "denim-textured.mp4"), denimHidden);
+  EXPECT_LT(meanDifference(firstFrame(clips() / "swimsuit-hidden.mp4"), denimHidden), 2.0);
+  EXPECT_LT(meanDifference(firstFrame(clips() / "t-shirt-hidden.mp4"), denimHidden), 2.0);
+  EXPECT_GT(meanDifference(firstFrame(clips() / "denim-textured.mp4"), firstFrame(clips() / "swimsuit-textured.mp4")),
+            10.0);
+  EXPECT_GT(meanDifference(firstFrame(clips() / "denim-textured.mp4"), denimHidden), 10.0);
 }
 
 TEST_F(StudyVideos, TheSameCommandWritesTheSameBytes) {
@@ -135,7 +147,7 @@ TEST_F(StudyVideos, TheSameCommandWritesTheSameBytes) {
   ASSERT_EQ(r.exitCode, 0) << r.output;
   EXPECT_EQ(r.output, "");
   for (const char* file : {"manifest.json", "denim-textured.mp4", "pants-hidden.mp4", "swimsuit-hidden.mp4"}) {
-    EXPECT_EQ(read(again.path() / "clips" / file), read(clips() / file)) << file;
+    EXPECT_TRUE(read(again.path() / "clips" / file) == read(clips() / file)) << file << " differs";
   }
 }
 
