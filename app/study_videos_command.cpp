@@ -8,7 +8,9 @@
 // The simulation is deterministic and so is the encoding (mp4_encoder.h): the same command gives
 // the same files. Everything that can be wrong with the input (the part scenes, the materials,
 // ffmpeg's presence, EGL) is checked before the first file is written.
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>

@@ -187,6 +187,50 @@ TEST_F(StudyVideos, GuessingTheRenderedClipsFeedsStudyAnalyze) {
   EXPECT_FALSE(report.empty());
 }
 
+TEST_F(StudyVideos, GuessWindowRecordsTheAnswersClickedInIt) {
+  // The window under Xvfb, driven by xdotool: each round clicks Play, then "pants", "stretchy" and
+  // "Next clip" where ImGui 1.86 lays them out in the window's top-left corner. Every click
+  // lands harmlessly in a phase that lacks its widget, so rounds repeat until the answers file
+  // holds a row per clip, however slowly the machine draws (RESOURCE_LOCK xvfb in CMake).
+  if (std::system("command -v xvfb-run > /dev/null && command -v xdotool > /dev/null") != 0)
+    GTEST_SKIP() << "xvfb-run or xdotool is not installed (scripts/install_deps.sh installs them)";
+  test::TempDir work("weft_study_guess_window_");
+  const fs::path driver = work.write("drive.sh", R"(
+"$WEFT" guess --clips "$CLIPS" --answers answers.csv --participant w01 > guess.log 2>&1 &
+pid=$!
+xdotool search --sync --name "guess the fabric" > /dev/null
+for round in $(seq 1 120); do
+  rows=$(grep -c '^w01,' answers.csv 2> /dev/null)
+  [ "${rows:-0}" -ge 4 ] && break
+  kill -0 $pid 2> /dev/null || break
+  xdotool mousemove 88 78 click 1; sleep 0.6
+  xdotool mousemove 165 55 click 1; sleep 0.1
+  xdotool mousemove 218 99 click 1; sleep 0.1
+  xdotool mousemove 88 137 click 1; sleep 0.3
+done
+wait $pid
+)");
+  const Result r = shell(work.path(),
+                         "WEFT='" + std::string(WEFT_BINARY) + "' CLIPS='" + clips().string() +
+                             "' LIBGL_ALWAYS_SOFTWARE=1 xvfb-run -a -s '-screen 0 1280x1000x24' sh '" +
+                             driver.string() + "'");
+  EXPECT_EQ(r.exitCode, 0) << r.output << read(work.path() / "guess.log");
+  EXPECT_NE(read(work.path() / "guess.log").find("recorded 4 answer(s) of participant w01"), std::string::npos)
+      << read(work.path() / "guess.log");
+  const std::vector<StudyAnswer> rows = readStudyAnswers((work.path() / "answers.csv").string());
+  ASSERT_EQ(rows.size(), 4u);
+  const ClipManifest manifest = readClipManifest(clips() / "manifest.json");
+  std::vector<std::string> hidden;
+  for (const StudyClip& clip : manifest.clips)
+    if (!clip.textured) hidden.push_back(clip.id);
+  const std::vector<int> order = shuffledOrder(4, seedOfParticipant("w01"));
+  for (std::size_t k = 0; k < rows.size(); ++k) {
+    EXPECT_EQ(rows[k].clip, hidden[static_cast<std::size_t>(order[k])]);
+    EXPECT_EQ(rows[k].guessedFabric, Fabric::Pants);
+    EXPECT_EQ(rows[k].guessedGroup, ElasticityGroup::Stretchy);
+  }
+}
+
 TEST(StudyVideosCommand, WithoutFfmpegFailsBeforeWritingAnything) {
   test::TempDir work("weft_study_videos_noffmpeg_");
   const Result r = weft(work.path(), "study-videos --out clips --width 32 --height 24 --seconds-per-part 0.1",
