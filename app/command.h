@@ -25,6 +25,8 @@ Command addValidateCommand(CLI::App& app);
 Command addBenchCommand(CLI::App& app);
 Command addEditCommand(CLI::App& app);
 Command addStudyAnalyzeCommand(CLI::App& app);
+Command addStudyVideosCommand(CLI::App& app);
+Command addGuessCommand(CLI::App& app);
 
 // `weft` with no subcommand: `weft edit` on the default scene.
 int editDefaultScene();

@@ -27,6 +27,7 @@
 #include "editor/scene_browser.h"
 #include "editor/viewport_interaction.h"
 #include "glfw_window.h"
+#include "imgui_layer.h"
 #include "orbit_controls.h"
 #include "png_writer.h"
 #include "render_view.h"
@@ -43,26 +44,6 @@ constexpr auto kAutosaveEvery = std::chrono::seconds(5);
 ui::OrbitCamera startCamera(const editor::EditorSession& session, const editor::ViewportRect& rect) {
   return ui::defaultCamera(session.view()->render, session.scene().output.camera, rect.aspect());
 }
-
-// ImGui for the window's lifetime: created after the window (its GLFW backend chains to the
-// window's own callbacks), destroyed before it.
-struct ImGuiLayer {
-  explicit ImGuiLayer(GLFWwindow* window) {
-    IMGUI_CHECKVERSION();
-    ImGui::CreateContext();
-    ImGui::GetIO().IniFilename = nullptr;  // panel layout is not written next to the user's files
-    ImGui::StyleColorsLight();
-    ImGui_ImplGlfw_InitForOpenGL(window, true);
-    ImGui_ImplOpenGL3_Init("#version 330 core");
-  }
-  ~ImGuiLayer() {
-    ImGui_ImplOpenGL3_Shutdown();
-    ImGui_ImplGlfw_Shutdown();
-    ImGui::DestroyContext();
-  }
-  ImGuiLayer(const ImGuiLayer&) = delete;
-  ImGuiLayer& operator=(const ImGuiLayer&) = delete;
-};
 
 // What a shortcut asks of the app beyond the session.
 struct ShortcutResult {

@@ -9,6 +9,7 @@ PACKAGES=(
   libgtest-dev libbenchmark-dev
   libimgui-dev libglfw3-dev libegl-dev libgl-dev libgl1-mesa-dev libegl-mesa0 libgl1-mesa-dri
   libstb-dev libpng-dev libboost-dev xvfb xauth xdotool x11-apps
+  ffmpeg
   clang
 )
 

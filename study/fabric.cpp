@@ -36,4 +36,18 @@ ElasticityGroup groupOf(Fabric fabric) {
   return fabric == Fabric::Denim || fabric == Fabric::Pants ? ElasticityGroup::Stiff : ElasticityGroup::Stretchy;
 }
 
+std::string_view materialPresetOf(Fabric fabric) {
+  switch (fabric) {
+    case Fabric::Denim:
+      return "11oz-black-denim";
+    case Fabric::TShirt:
+      return "gray-interlock";
+    case Fabric::Pants:
+      return "royal-target";
+    case Fabric::Swimsuit:
+      return "white-swim-solid";
+  }
+  return "?";
+}
+
 }  // namespace weft::study

@@ -24,6 +24,10 @@ std::optional<ElasticityGroup> parseGroup(std::string_view name);
 
 ElasticityGroup groupOf(Fabric fabric);
 
+// The material preset (presets/materials) the study's clips simulate each fabric with: the Wang
+// 2011 measurements the thesis names (presets/materials/README.md).
+std::string_view materialPresetOf(Fabric fabric);
+
 inline int indexOf(Fabric fabric) { return static_cast<int>(fabric); }
 inline int indexOf(ElasticityGroup group) { return static_cast<int>(group); }
 

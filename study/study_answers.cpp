@@ -1,11 +1,14 @@
 #include "study_answers.h"
 
 #include <array>
+#include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <optional>
 #include <set>
 #include <utility>
 
+#include "util/atomic_file.h"
 #include "util/echo.h"
 #include "util/input_error.h"
 
@@ -136,6 +139,38 @@ std::vector<StudyAnswer> readStudyAnswers(const std::string& file) {
   std::ifstream in(file);
   if (!in) throw InputError(file, "", "cannot open the file");
   return parseStudyAnswers(in, file);
+}
+
+std::string studyAnswersHeader() {
+  std::string header;
+  for (int c = 0; c < kColumnCount; ++c) header += std::string(c > 0 ? "," : "") + kColumnNames[c];
+  return header;
+}
+
+std::string studyAnswerRow(const StudyAnswer& answer) {
+  return answer.participant + "," + answer.clip + "," + std::string(fabricName(answer.trueFabric)) + "," +
+         std::string(groupName(groupOf(answer.trueFabric))) + "," + std::string(fabricName(answer.guessedFabric)) +
+         "," + std::string(groupName(answer.guessedGroup));
+}
+
+void appendStudyAnswers(const std::string& file, const std::vector<StudyAnswer>& answers) {
+  std::string text;
+  std::error_code ec;
+  if (std::filesystem::exists(file, ec)) {
+    std::ifstream in(file);
+    if (!in) throw InputError(file, "", "cannot open the file");
+    std::stringstream contents;
+    contents << in.rdbuf();
+    text = contents.str();
+  }
+  const bool blank = text.find_first_not_of(" \t\r\n") == std::string::npos;
+  if (blank) text = studyAnswersHeader() + "\n";
+  if (text.back() != '\n') text += '\n';
+  for (const StudyAnswer& answer : answers) text += studyAnswerRow(answer) + "\n";
+  // Read back before writing: the old rows must parse, and no clip may be answered twice.
+  std::istringstream check(text);
+  parseStudyAnswers(check, file);
+  writeFileAtomically(file, text);
 }
 
 }  // namespace weft::study

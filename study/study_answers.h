@@ -38,4 +38,15 @@ struct StudyAnswer {
 std::vector<StudyAnswer> parseStudyAnswers(std::istream& in, const std::string& file);
 std::vector<StudyAnswer> readStudyAnswers(const std::string& file);
 
+// The header line and one answer's row, in the column order of the example above (guessed_group
+// always written out, so the file says what the participant answered).
+std::string studyAnswersHeader();
+std::string studyAnswerRow(const StudyAnswer& answer);
+
+// Adds `answers` at the end of `file` (created with the header when missing or empty), rewriting
+// it atomically (util/atomic_file.h) so that a crash leaves the old file or the new one, never
+// half a row. The file's existing rows are read first and must parse; an answer a participant
+// already gave for the same clip is an InputError, as it would be when reading the file back.
+void appendStudyAnswers(const std::string& file, const std::vector<StudyAnswer>& answers);
+
 }  // namespace weft::study

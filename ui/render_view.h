@@ -24,6 +24,7 @@ struct ClothView {
   WeavePattern pattern = WeavePattern::Gingham;
   double threadPitch = 0.005;  // m: distance between neighbouring threads of the woven texture
   int threadsPerBand = 8;      // gingham: threads of one colour before the check changes colour
+  bool woven = true;           // false: one flat colour (the tint), no threads: the user study's texture-hidden clips
   std::vector<Vec3> pinTravel; // m: every offset a pin script moves pinned vertices by (for framing)
 };
 

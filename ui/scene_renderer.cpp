@@ -40,7 +40,7 @@ uniform vec3 uLight;        // towards the light, normalized
 uniform float uPitch;       // thread pitch (m)
 uniform vec2 uWeft;         // weft direction in material space (cos, sin)
 uniform float uBand;        // threads per yarn-dyed colour band
-uniform int uPattern;       // 0 gingham, 1 plain
+uniform int uPattern;       // 0 gingham, 1 plain, 2 flat (no threads: one colour)
 out vec4 outColour;
 
 // Brightness across a thread: a rounded yarn, darker at its sides.
@@ -50,6 +50,7 @@ float yarn(float s) {
 }
 
 vec3 woven(vec2 rest) {
+  if (uPattern == 2) return uTint * 0.81;  // the woven texture's mean brightness, without threads
   // Material space into the weft/warp frame: u along weft, v along warp, in threads.
   vec2 warp = vec2(-uWeft.y, uWeft.x);
   vec2 t = vec2(dot(rest, uWeft), dot(rest, warp)) / uPitch;
@@ -273,7 +274,7 @@ void SceneRenderer::draw(const RenderView& view, const OrbitCamera& camera, int 
     glUniform3f(gl.surface.uniform("uTint"), cloth.tint[0], cloth.tint[1], cloth.tint[2]);
     glUniform1f(gl.surface.uniform("uPitch"), static_cast<float>(cloth.threadPitch));
     glUniform1f(gl.surface.uniform("uBand"), static_cast<float>(cloth.threadsPerBand));
-    glUniform1i(gl.surface.uniform("uPattern"), cloth.pattern == WeavePattern::Plain ? 1 : 0);
+    glUniform1i(gl.surface.uniform("uPattern"), !cloth.woven ? 2 : cloth.pattern == WeavePattern::Plain ? 1 : 0);
     glUniform2f(gl.surface.uniform("uWeft"), static_cast<float>(std::cos(cloth.weftAngleRad)),
                 static_cast<float>(std::sin(cloth.weftAngleRad)));
     gl.drawSurface(clothVertices(*cloth.mesh));
@@ -285,6 +286,7 @@ void SceneRenderer::draw(const RenderView& view, const OrbitCamera& camera, int 
   for (const ClothView& cloth : view.cloths) {
     const ClothMesh& mesh = *cloth.mesh;
     for (const Edge& e : mesh.edges) {
+      if (!settings_.markTornAndCutEdges) break;
       if (e.torn) appendSegment(torn, mesh.x[e.v[0]], mesh.x[e.v[1]]);
       if (e.cut) appendSegment(cut, mesh.x[e.v[0]], mesh.x[e.v[1]]);
     }

@@ -15,6 +15,7 @@ struct RenderSettings {
   std::array<float, 3> background{0.93f, 0.94f, 0.96f};  // RGB of the empty image
   std::array<float, 3> lightDirection{0.35f, 0.8f, 0.5f}; // towards the light (world, normalized when used)
   float lineWidth = 2.0f;       // px: torn, cut and sharp edges
+  bool markTornAndCutEdges = true;  // false: a tear shows only as the hole it opens (the user study's clips)
 };
 
 class SceneRenderer {
