@@ -262,7 +262,7 @@ int runEditor(const EditorOptions& options) {
       window.setTitle("Weft: " + session->scene().name);
       browser.setFolders(editor::browserFolders(session->document().file()));
     }
-    workspace.forgetAutosaveWhenClean();
+    workspace.forgetAutosaveWhenClean(ui.panels.tools);
     // Real time: the simulation advances by as long as the last frame took (at the target speed).
     const Clock::time_point now = Clock::now();
     const double frameSeconds = std::chrono::duration<double>(now - lastFrame).count();
@@ -300,7 +300,7 @@ int runEditor(const EditorOptions& options) {
     }
     if (Clock::now() - lastAutosave > kAutosaveEvery) {
       try {
-        workspace.writeAutosave();
+        workspace.writeAutosave(ui.panels.tools);
       } catch (const std::exception& e) {
         session->status = std::string("autosave failed: ") + e.what();
       }
