@@ -107,6 +107,30 @@ TEST_F(ToolTagsCrashRecoveryTest, TagsInTheirOwnFileAreAutosavedAndRecovered) {
   EXPECT_FALSE(autosaveExists()) << "saved: the autosave has done its job";
 }
 
+// Started on another scene, "Open it with them" opens the tagged scene with the sword's tags.
+TEST_F(ToolTagsCrashRecoveryTest, OpeningAnotherScenesAutosaveBringsItsToolsTags) {
+  start(twoTools_);
+  frames(1);
+  pickTool(0, appFrame());
+  const bool swordWasSharp = worldVertexSharp(0, 0);
+  currentTool()->toggleVertex(session(), 0);
+  workspace_->writeAutosave(ui_.panels.tools);
+  kill();
+
+  start(scene_);
+  frames(2);
+  ASSERT_TRUE(aPromptIsOpen());
+  imgui_->click(probe_.centre("recovery/recover"), appFrame());  // "Open it with them"
+  frames(2);
+  ASSERT_EQ(session().document().file(), twoTools_);
+  const ToolTagEditor* sword = keptTool("sword");
+  ASSERT_NE(sword, nullptr) << session().status;
+  EXPECT_TRUE(sword->document().dirty());
+  EXPECT_NE(worldVertexSharp(0, 0), swordWasSharp);
+  EXPECT_NE(session().status.find("sharp tags"), std::string::npos) << session().status;
+  EXPECT_TRUE(autosaveExists());
+}
+
 // The hammer's tags kept in the scene itself: tagged after the scene was saved, then a kill. The
 // restart on another scene offers them; "Later" keeps them, opening the scene offers them again,
 // and Recover opens it with the hammer's tags as they were.
