@@ -131,6 +131,20 @@ TEST_F(ToolTagsCrashRecoveryTest, OpeningAnotherScenesAutosaveBringsItsToolsTags
   EXPECT_TRUE(autosaveExists());
 }
 
+// An autosave's tags that the mesh cannot have (a vertex it lacks) are not recovered, and said so;
+// the scene and its other work still are.
+TEST_F(ToolTagsCrashRecoveryTest, TagsTheMeshCannotHaveAreSkippedAndNamed) {
+  const JsonDocument clean = JsonDocument::open(twoTools_);
+  Autosave(autosaveDir()).write(clean, {UnsavedToolTags{0, "sword", swordTags_, false, json{{"sharp_vertices", {999999}}}}});
+  start(twoTools_);
+  frames(2);
+  ASSERT_TRUE(aPromptIsOpen());
+  imgui_->click(probe_.centre("recovery/recover"), appFrame());
+  frames(1);
+  EXPECT_TRUE(ui_.panels.tools.unsavedToolNames().empty());
+  EXPECT_NE(session().status.find("autosaved tags of sword were not recovered"), std::string::npos) << session().status;
+}
+
 // The hammer's tags kept in the scene itself: tagged after the scene was saved, then a kill. The
 // restart on another scene offers them; "Later" keeps them, opening the scene offers them again,
 // and Recover opens it with the hammer's tags as they were.

@@ -122,7 +122,7 @@ void EditorWorkspace::recoverToolTags(const Recovery& recovery, ToolTagEditors& 
   if (!skipped.empty()) {
     std::string names;
     for (const std::string& name : skipped) names += (names.empty() ? "" : ", ") + name;
-    session_->status += "; the autosaved tags of " + names + " were not recovered: no longer a mesh tool of the scene";
+    session_->status += "; the autosaved tags of " + names + " were not recovered: the tool is gone from the scene, or its mesh no longer has the tagged vertices";
   }
 }
 

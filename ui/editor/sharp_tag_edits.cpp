@@ -254,7 +254,22 @@ std::filesystem::path ToolTagEditor::saveBesideSceneAs(EditorSession& session, c
 }
 
 void ToolTagEditor::recover(EditorSession& session, const nlohmann::json& tags) {
-  commit(session, sharpTagsFromJson(tags), "recover autosaved sharp tags of " + name_);
+  // An autosave is a file like any other: its tags are checked against the mesh before they reach
+  // the world, and put in canonical form (the toggles keep them sorted).
+  SharpTags recovered = sharpTagsFromJson(tags);
+  const int vertices = static_cast<int>(session.world().obstacle(obstacle_).bodyVertices.size());
+  for (int v : recovered.vertices) {
+    if (v < 0 || v >= vertices) throw std::invalid_argument("no vertex " + std::to_string(v) + " on " + name_);
+  }
+  for (auto& e : recovered.edges) {
+    if (e[0] > e[1]) std::swap(e[0], e[1]);
+    if (e[0] < 0 || e[1] >= vertices || e[0] == e[1]) throw std::invalid_argument("no such edge on " + name_);
+  }
+  std::sort(recovered.vertices.begin(), recovered.vertices.end());
+  recovered.vertices.erase(std::unique(recovered.vertices.begin(), recovered.vertices.end()), recovered.vertices.end());
+  std::sort(recovered.edges.begin(), recovered.edges.end());
+  recovered.edges.erase(std::unique(recovered.edges.begin(), recovered.edges.end()), recovered.edges.end());
+  commit(session, recovered, "recover autosaved sharp tags of " + name_);
 }
 
 void ToolTagEditor::saveInScene(EditorSession& session) {

@@ -75,7 +75,8 @@ class ToolTagEditor {
   // scenes and obstacles using the tool are not changed. Returns the file written.
   std::filesystem::path saveBesideScene(EditorSession& session);
   // Recovered from an autosave (autosave.h): `tags` (sharpTagsJson's format) become the tool's,
-  // one undo step, unsaved.
+  // one undo step, unsaved. Throws std::invalid_argument (nothing changes) when they name a vertex
+  // the mesh does not have, or are not tags at all.
   void recover(EditorSession& session, const nlohmann::json& tags);
   // Keeps the tags in the scene itself ("sharp_tags": {...} in the obstacle's mesh), as one
   // scene edit (saved with the scene): no file beside the mesh or the scene is written.

@@ -95,7 +95,7 @@ std::vector<std::string> ToolTagEditors::recover(EditorSession& session, const s
     try {
       select(session, recovered.obstacle).recover(session, recovered.tags);
     } catch (const std::exception&) {
-      skipped.push_back(recovered.tool);  // no longer a mesh (a generated shape now)
+      skipped.push_back(recovered.tool);  // a generated shape now, or tags its mesh cannot have
     }
     current_ = wasCurrent;
   }

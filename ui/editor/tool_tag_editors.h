@@ -43,7 +43,8 @@ class ToolTagEditors {
   std::vector<UnsavedToolTags> unsavedTags() const;
   // Recovery from an autosave, on the scene it was recovered into: each tool's tags become its
   // kept editor's, unsaved (ToolTagEditor::recover); none is made current. A tool no longer at its
-  // index (by name) is skipped; returns the names of those.
+  // index (by name), no longer a mesh, or whose mesh cannot have the tags, is skipped; returns the
+  // names of those.
   std::vector<std::string> recover(EditorSession& session, const std::vector<UnsavedToolTags>& tags);
 
   // The tools whose tags were edited and are not saved (in their file or in the scene), by name.
