@@ -170,8 +170,10 @@ int runEditor(const EditorOptions& options) {
   editor::EditorUi ui;
   editor::EditorWorkspace workspace(openSession(options), editor::Autosave(options.autosaveDir), ui);
   for (const editor::Recovery& r : ui.recoveries) {
-    std::printf("weft edit: offering unsaved edits to %s back (autosaved %s in %s)\n", r.original.string().c_str(),
-                r.savedAt.c_str(), r.autosaveFile.string().c_str());
+    std::string tools;  // the tools whose unsaved sharp tags come back with it
+    for (const editor::UnsavedToolTags& tags : r.toolTags) tools += (tools.empty() ? " and the sharp tags of " : ", ") + tags.tool;
+    std::printf("weft edit: offering unsaved edits to %s%s back (autosaved %s in %s)\n", r.original.string().c_str(),
+                tools.c_str(), r.savedAt.c_str(), r.autosaveFile.string().c_str());
   }
   const std::filesystem::path settingsFile = editor::defaultSettingsFile();
   ui.panels.settings = editor::loadEditorSettings(settingsFile);
