@@ -151,8 +151,10 @@ int runEditor(const EditorOptions& options) {
   editor::EditorUi ui;
   editor::EditorWorkspace workspace(openSession(options), editor::Autosave(options.autosaveDir), ui);
   for (const editor::Recovery& r : ui.recoveries) {
-    std::printf("weft edit: offering unsaved edits to %s back (autosaved %s in %s)\n", r.original.string().c_str(),
-                r.savedAt.c_str(), r.autosaveFile.string().c_str());
+    std::string tools;  // the tools whose unsaved sharp tags come back with it
+    for (const editor::UnsavedToolTags& tags : r.toolTags) tools += (tools.empty() ? " and the sharp tags of " : ", ") + tags.tool;
+    std::printf("weft edit: offering unsaved edits to %s%s back (autosaved %s in %s)\n", r.original.string().c_str(),
+                tools.c_str(), r.savedAt.c_str(), r.autosaveFile.string().c_str());
   }
   const std::filesystem::path settingsFile = editor::defaultSettingsFile();
   ui.panels.settings = editor::loadEditorSettings(settingsFile);
@@ -243,7 +245,7 @@ int runEditor(const EditorOptions& options) {
       window.setTitle("Weft: " + session->scene().name);
       browser.setFolders(editor::browserFolders(session->document().file()));
     }
-    workspace.forgetAutosaveWhenClean();
+    workspace.forgetAutosaveWhenClean(ui.panels.tools);
     // Real time: the simulation advances by as long as the last frame took (at the target speed).
     const Clock::time_point now = Clock::now();
     const double frameSeconds = std::chrono::duration<double>(now - lastFrame).count();
@@ -281,7 +283,7 @@ int runEditor(const EditorOptions& options) {
     }
     if (Clock::now() - lastAutosave > kAutosaveEvery) {
       try {
-        workspace.writeAutosave();
+        workspace.writeAutosave(ui.panels.tools);
       } catch (const std::exception& e) {
         session->status = std::string("autosave failed: ") + e.what();
       }

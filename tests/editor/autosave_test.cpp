@@ -192,3 +192,55 @@ TEST(Autosave, DefaultDirectoryFollowsTheEnvironment) {
 
 }  // namespace
 }  // namespace weft::editor
+
+// A scene with no unsaved edit of its own but a tool's unsaved sharp tags is autosaved, and the
+// tags come back with it; once the tags file holds them (saved), nothing is offered.
+namespace weft::editor {
+namespace {
+
+TEST(Autosave, AToolsUnsavedTagsAloneAreKeptAndOfferedUntilTheirFileHoldsThem) {
+  const TempDir dir;
+  const fs::path file = dir.write("scenes/tools.json", R"({"name": "tools"})");
+  const fs::path tagsFile = dir.path() / "scenes" / "sword.sharp.json";
+  Autosave autosave(dir.path() / "autosave");
+  const JsonDocument clean = JsonDocument::open(file);
+  const json tags = {{"sharp_edges", json::array({json::array({0, 1})})}, {"sharp_vertices", json::array({3})}};
+  autosave.write(clean, {UnsavedToolTags{0, "sword", tagsFile, false, tags},
+                         UnsavedToolTags{1, "hammer", {}, true, json{{"sharp_edges", json::array()}, {"sharp_vertices", json::array()}}}});
+
+  std::optional<Recovery> found = autosave.find(file);
+  ASSERT_TRUE(found.has_value()) << "unsaved tags alone are unsaved work";
+  ASSERT_EQ(found->toolTags.size(), 2u);
+  EXPECT_EQ(found->toolTags[0].obstacle, 0);
+  EXPECT_EQ(found->toolTags[0].tool, "sword");
+  EXPECT_EQ(found->toolTags[0].file, fs::weakly_canonical(tagsFile));
+  EXPECT_FALSE(found->toolTags[0].inScene);
+  EXPECT_EQ(found->toolTags[0].tags, tags);
+  EXPECT_TRUE(found->toolTags[1].inScene);
+  EXPECT_EQ(autosave.all().size(), 1u);
+
+  // Only the sword's, saved since: its file holds them, so nothing is left to offer.
+  autosave.write(clean, {UnsavedToolTags{0, "sword", tagsFile, false, tags}});
+  std::ofstream(tagsFile) << tags.dump();
+  EXPECT_FALSE(autosave.find(file).has_value());
+
+  // With nothing unsaved at all, a write removes the autosave.
+  autosave.write(clean);
+  EXPECT_FALSE(fs::exists(autosave.fileFor(file)));
+}
+
+TEST(Autosave, AnAutosaveWithoutToolTagsIsReadWithNone) {
+  const TempDir dir;
+  const fs::path file = dir.write("a.json", R"({"name": "a"})");
+  Autosave autosave(dir.path() / "autosave");
+  const json older = {{"weftAutosave", 1}, {"original", fs::weakly_canonical(file).string()},
+                      {"savedAt", "2024-05-01T12:00:00Z"}, {"document", {{"name", "a, edited"}}}};
+  fs::create_directories(autosave.directory());
+  std::ofstream(autosave.fileFor(file)) << older.dump();
+  const std::optional<Recovery> found = autosave.find(file);
+  ASSERT_TRUE(found.has_value());
+  EXPECT_TRUE(found->toolTags.empty());
+}
+
+}  // namespace
+}  // namespace weft::editor

@@ -51,7 +51,7 @@ class CrashRecoveryTest : public EditorPanelsTest {
     return [this] {
       drawEditorUi(workspace_->session(), ui_);
       workspace_->applyChoices(ui_);
-      workspace_->forgetAutosaveWhenClean();
+      workspace_->forgetAutosaveWhenClean(ui_.panels.tools);
     };
   }
   void frames(int n) {

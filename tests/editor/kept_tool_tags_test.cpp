@@ -2,7 +2,7 @@
 // editor): picking another tool in the Tools panel keeps the first one's unsaved tags and undo
 // steps; a reset puts every tool's unsaved tags back into the world; the quit and open prompts ask
 // about unsaved tags as about the scene's edits ("Save" writes the tags file, "Discard" does not,
-// "Cancel" keeps everything). Headless, through the panels.
+// "Cancel" keeps everything); Ctrl+Z reaches every tool's tags. Headless, through the panels.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -16,8 +16,10 @@
 #include "contact/obstacle.h"
 #include "editor/autosave.h"
 #include "editor/editor_workspace.h"
+#include "editor/menu_bar.h"
+#include "editor/shared_undo.h"
 #include "editor/sharp_tag_edits.h"
-#include "support/editor_panels_fixture.h"
+#include "support/two_tools_fixture.h"
 
 namespace weft::editor {
 namespace {
@@ -25,62 +27,10 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-using test::EditorPanelsTest;
+using test::TwoToolsPanelsTest;
 
-class KeptToolTagsTest : public EditorPanelsTest {
+class KeptToolTagsTest : public TwoToolsPanelsTest {
  protected:
-  // sword-into-sheet (6 x 6 cloth) with a hammer beside the sword, both meshes copied beside the
-  // scene: their tags files are the test's own (tools/NAME.sharp.json there, not there yet).
-  void SetUp() override {
-    EditorPanelsTest::SetUp();
-    if (IsSkipped()) return;
-    const fs::path tools = dir_.path() / "scenes" / "tools";
-    fs::create_directories(tools);
-    for (const char* mesh : {"sword.obj", "hammer.obj"}) {
-      fs::copy_file(fs::path(WEFT_SOURCE_DIR) / "assets" / "tools" / mesh, tools / mesh);
-    }
-    std::ifstream in(fs::path(WEFT_SOURCE_DIR) / "presets" / "scenes" / "sword-into-sheet.json");
-    json scene = json::parse(in);
-    scene["cloths"][0]["mesh"]["grid"]["resolution"] = json::array({6, 6});
-    json hammer = scene["obstacles"][0];
-    hammer["name"] = "hammer";
-    hammer["shape"]["mesh"]["path"] = "tools/hammer.obj";
-    scene["obstacles"].push_back(hammer);
-    twoTools_ = dir_.write("scenes/two-tools.json", scene.dump(2));
-    swordTags_ = tools / "sword.sharp.json";
-    session_ = std::make_unique<EditorSession>(twoTools_);
-    session_->paused = true;
-    showToolsPanel();
-  }
-
-  // The Tools panel in front, with room for its combo's list.
-  void showToolsPanel() {
-    imgui_->frame([&] {
-      ImGui::SetWindowPos("Tools", ImVec2(500, 200));
-      ImGui::SetWindowSize("Tools", ImVec2(400, 300));
-      ImGui::SetWindowFocus("Tools");
-      drawUi()();
-    });
-    imgui_->frame(drawUi());
-  }
-
-  // Picks a tool in the Tools panel's combo, as the user does.
-  void pickTool(int obstacle) {
-    const std::string item = "tools/tool" + std::to_string(obstacle);
-    probe_.rects.erase(item);
-    imgui_->click(probe_.centre("tools/tool"), drawUi());
-    imgui_->frame(drawUi());
-    ASSERT_TRUE(probe_.rects.count(item)) << "the tool combo did not open";
-    imgui_->click(probe_.centre(item), drawUi());
-    imgui_->frame(drawUi());
-    ASSERT_NE(currentTool(), nullptr) << session_->status;
-    ASSERT_EQ(currentTool()->obstacle(), obstacle);
-  }
-  ToolTagEditor* currentTool() { return ui_.panels.tools.current(); }
-  bool worldVertexSharp(int obstacle, int vertex) const {
-    return session_->world().obstacle(obstacle).sharpVertex[static_cast<std::size_t>(vertex)];
-  }
-  static bool aPromptIsOpen() { return ImGui::GetCurrentContext()->OpenPopupStack.Size > 0; }
   // The sword with vertex 0 tagged and not saved; the scene itself has no unsaved edit.
   void tagTheSwordUnsaved() {
     pickTool(0);
@@ -89,9 +39,22 @@ class KeptToolTagsTest : public EditorPanelsTest {
     ASSERT_TRUE(currentTool()->document().dirty());
     ASSERT_FALSE(session_->dirty());
   }
-
-  fs::path twoTools_;
-  fs::path swordTags_;
+  // The UI with the app's key handling (editor_app.cpp calls applyEditShortcuts the same way).
+  std::function<void()> drawUiAndKeys() {
+    return [this] {
+      drawEditorUi(*session_, ui_);
+      if (!ImGui::GetIO().WantCaptureKeyboard) applyEditShortcuts(*session_, ui_.panels);
+    };
+  }
+  void ctrlTap(int key) {
+    ImGuiIO& io = ImGui::GetIO();
+    io.KeyCtrl = true;
+    imgui_->tap(key, drawUiAndKeys());
+    io.KeyCtrl = false;
+    imgui_->frame(drawUiAndKeys());
+  }
+  static constexpr int kZKey = 300;  // free indices of io.KeysDown for the key map
+  static constexpr int kYKey = 301;
 };
 
 TEST_F(KeptToolTagsTest, SwitchingToolsKeepsEachToolsUnsavedTagsAndUndo) {
@@ -103,12 +66,51 @@ TEST_F(KeptToolTagsTest, SwitchingToolsKeepsEachToolsUnsavedTagsAndUndo) {
   pickTool(0);
   EXPECT_TRUE(currentTool()->document().dirty()) << "the sword's tags are still unsaved, not forgotten";
   EXPECT_NE(worldVertexSharp(0, 0), swordWasSharp);
-  ASSERT_TRUE(probe_.rects.count("tools/undo"));
-  imgui_->click(probe_.centre("tools/undo"), drawUi());
-  EXPECT_EQ(worldVertexSharp(0, 0), swordWasSharp) << "the sword's own undo step came back with it";
-  EXPECT_FALSE(currentTool()->document().dirty());
   pickTool(1);
   EXPECT_TRUE(currentTool()->document().dirty()) << "and the hammer's tags are still there";
+  // Both tools' undo steps are kept, in the one history: the hammer's (the latest), then the
+  // sword's, whichever tool is picked.
+  pickTool(0);
+  ASSERT_TRUE(probe_.rects.count("tools/undo"));
+  imgui_->click(probe_.centre("tools/undo"), drawUi());
+  EXPECT_EQ(currentTool()->name(), "hammer") << "the undo picked the tool it changed";
+  EXPECT_FALSE(currentTool()->document().dirty());
+  imgui_->click(probe_.centre("tools/undo"), drawUi());
+  EXPECT_EQ(worldVertexSharp(0, 0), swordWasSharp) << "the sword's own undo step came back with it";
+  EXPECT_EQ(currentTool()->name(), "sword");
+  EXPECT_FALSE(currentTool()->document().dirty());
+}
+
+// One history for every tool (shared_undo.h): Ctrl+Z after tagging the sword, picking the hammer
+// and tagging it takes back the hammer's tag, then the sword's, making the sword the current tool
+// so the user sees what changed; Ctrl+Y brings it back.
+TEST_F(KeptToolTagsTest, CtrlZReachesTheTagsOfAToolNoLongerPicked) {
+  ImGui::GetIO().KeyMap[ImGuiKey_Z] = kZKey;
+  ImGui::GetIO().KeyMap[ImGuiKey_Y] = kYKey;
+  pickTool(0);
+  const bool swordWasSharp = worldVertexSharp(0, 0);
+  currentTool()->toggleVertex(*session_, 0);
+  pickTool(1);
+  const bool hammerWasSharp = worldVertexSharp(1, 1);
+  currentTool()->toggleVertex(*session_, 1);
+  imgui_->frame(drawUiAndKeys());
+
+  ctrlTap(kZKey);
+  EXPECT_EQ(worldVertexSharp(1, 1), hammerWasSharp) << "the latest edit first: the hammer's";
+  EXPECT_NE(worldVertexSharp(0, 0), swordWasSharp);
+  EXPECT_EQ(latestUndoLabel(*session_, ui_.panels.tools), "toggle sharp vertex 0 on sword")
+      << "the Edit menu names the tool the next undo changes";
+
+  ctrlTap(kZKey);
+  EXPECT_EQ(worldVertexSharp(0, 0), swordWasSharp) << "the sword's tag, though the hammer is picked: " << session_->status;
+  ASSERT_NE(currentTool(), nullptr);
+  EXPECT_EQ(currentTool()->name(), "sword") << "the Tools panel shows the tool the undo changed";
+  EXPECT_NE(session_->status.find("sword"), std::string::npos) << session_->status;
+  EXPECT_FALSE(currentTool()->document().dirty());
+
+  ctrlTap(kYKey);
+  EXPECT_NE(worldVertexSharp(0, 0), swordWasSharp) << "Ctrl+Y redoes it";
+  EXPECT_TRUE(currentTool()->document().dirty());
 }
 
 // A reset rebuilds the world from the files: each tool's unsaved tags go back in, not only the

@@ -88,13 +88,38 @@ std::optional<Recovery> readAutosave(const fs::path& autosaveFile) {
   if (!has("weftAutosave", &json::is_number_integer) || j["weftAutosave"] != kFormatVersion) return std::nullopt;
   if (!has("original", &json::is_string) || !has("savedAt", &json::is_string) || !j.contains("document"))
     return std::nullopt;
-  return Recovery{j["original"].get<std::string>(), autosaveFile, j["document"], j["savedAt"].get<std::string>()};
+  Recovery recovery{j["original"].get<std::string>(), autosaveFile, j["document"], {}, j["savedAt"].get<std::string>()};
+  if (j.contains("toolTags")) {
+    if (!j["toolTags"].is_array()) return std::nullopt;
+    for (const json& entry : j["toolTags"]) {
+      const auto field = [&](const char* key, bool (json::*isType)() const noexcept) {
+        const auto it = entry.find(key);
+        return it != entry.end() && ((*it).*isType)();
+      };
+      if (!entry.is_object() || !field("obstacle", &json::is_number_integer) || !field("tool", &json::is_string) ||
+          !field("file", &json::is_string) || !field("inScene", &json::is_boolean) || !field("tags", &json::is_object))
+        return std::nullopt;
+      recovery.toolTags.push_back(UnsavedToolTags{entry["obstacle"].get<int>(), entry["tool"].get<std::string>(),
+                                                  entry["file"].get<std::string>(), entry["inScene"].get<bool>(),
+                                                  entry["tags"]});
+    }
+  }
+  return recovery;
+}
+
+// A tool's recorded tags are work the disk lacks unless its tags file holds exactly them. Tags
+// kept in the scene always count: the scene's document says whether they were saved.
+bool toolTagsDifferFromDisk(const UnsavedToolTags& tags) {
+  if (tags.inScene || tags.file.empty()) return true;
+  const std::optional<json> onDisk = readStrictly(tags.file);
+  return !onDisk || *onDisk != tags.tags;
 }
 
 // Whether the autosave holds anything the original does not: an untitled document, a missing or
-// unparseable original, or different JSON.
+// unparseable original, different JSON, or a tool's tags its file does not hold.
 bool differsFromDisk(const Recovery& recovery) {
   if (recovery.original.empty()) return true;
+  if (std::any_of(recovery.toolTags.begin(), recovery.toolTags.end(), toolTagsDifferFromDisk)) return true;
   const std::optional<json> onDisk = readStrictly(recovery.original);
   return !onDisk || *onDisk != recovery.document;
 }
@@ -121,18 +146,26 @@ fs::path Autosave::fileFor(const fs::path& original) const {
   return dir_ / (absolute.stem().string() + "-" + hash + kSuffix);
 }
 
-void Autosave::write(const JsonDocument& doc) {
-  if (!doc.dirty()) {
+void Autosave::write(const JsonDocument& doc, const std::vector<UnsavedToolTags>& toolTags) {
+  if (!doc.dirty() && toolTags.empty()) {
     discard(doc.file());
     return;
   }
   std::error_code ec;
   fs::create_directories(dir_, ec);
   if (ec) throw std::runtime_error("cannot create the autosave folder " + dir_.string() + ": " + ec.message());
-  const json record = {{"weftAutosave", kFormatVersion},
+  json record = {{"weftAutosave", kFormatVersion},
                        {"original", absoluteOf(doc.file()).string()},
                        {"savedAt", utcNow()},
-                       {"document", doc.json()}};
+                       {"document", doc.json()},
+                       {"toolTags", json::array()}};
+  for (const UnsavedToolTags& tags : toolTags) {
+    record["toolTags"].push_back({{"obstacle", tags.obstacle},
+                                  {"tool", tags.tool},
+                                  {"file", tags.file.empty() ? std::string() : absoluteOf(tags.file).string()},
+                                  {"inScene", tags.inScene},
+                                  {"tags", tags.tags}});
+  }
   writeFileAtomically(fileFor(doc.file()), record.dump(2) + "\n");
 }
 

@@ -14,6 +14,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -134,8 +135,11 @@ class EditorSession {
   bool savesIntoInstalledData() const;             // a plain save() would write a shipped scene
   bool dirty() const { return document_.dirty(); }
 
-  // Writes the autosave when there are unsaved edits (the editor calls it every few seconds).
-  void autosave(Autosave& store) const { store.write(document_); }
+  // Writes the autosave when there are unsaved edits, the scene's or its tools' sharp tags (the
+  // editor calls it every few seconds).
+  void autosave(Autosave& store, const std::vector<UnsavedToolTags>& toolTags = {}) const {
+    store.write(document_, toolTags);
+  }
 
   std::string status;  // the last message for the status bar: what was applied, refused or needs a reset
   // The last refused edit, until the next edit; none after an accepted one.

@@ -139,6 +139,11 @@ void drawRecoveryPrompt(const EditorSession& session, EditorUi& ui) {
   ImGui::OpenPopup("Recover unsaved edits?");
   if (ImGui::BeginPopupModal("Recover unsaved edits?", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
     ImGui::Text("Weft stopped with unsaved edits to %s", offered.original.string().c_str());
+    if (!offered.toolTags.empty()) {
+      std::vector<std::string> tools;
+      for (const UnsavedToolTags& tags : offered.toolTags) tools.push_back(tags.tool);
+      ImGui::Text("and to the sharp tags of %s", joined(tools).c_str());
+    }
     ImGui::Text("(autosaved %s).%s", offered.savedAt.c_str(),
                 ui.recoveries.size() > 1 ? "  More autosaves follow." : "");
     if (ImGui::Button(openScene ? "Recover them" : "Open it with them")) ui.recoveryChoice = RecoveryChoice::Recover;

@@ -26,8 +26,9 @@ struct EditorUi {
   OpenPrompt open = OpenPrompt::None;   // Confirmed: the app opens panels.openRequest
   std::vector<Recovery> recoveries;     // autosaves to offer back, the first one shown
   RecoveryChoice recoveryChoice = RecoveryChoice::Undecided;  // for recoveries.front()
-  // With panels.openRequest: that scene opens with these recovered edits (the workspace sets it).
-  std::optional<nlohmann::json> openRecovered;
+  // With panels.openRequest: that scene opens with these recovered edits, its tools' tags
+  // included (the workspace sets it).
+  std::optional<Recovery> openRecovered;
   bool frameScene = false;    // View > Frame the scene: the app re-frames its camera and clears it
   bool openDialog = false;    // File > Open...
   bool saveAsDialog = false;  // File > Save as...

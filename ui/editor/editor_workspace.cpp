@@ -56,6 +56,7 @@ bool EditorWorkspace::applyChoices(EditorUi& ui) {
           try {
             replaceSession(std::make_unique<EditorSession>(session_->document().file(), offered.document), true);
             session_->status = "recovered the unsaved edits autosaved " + offered.savedAt;
+            recoverToolTags(offered, ui.panels.tools);
             replaced = true;
           } catch (const InputError& e) {
             ui.recoveries.insert(ui.recoveries.begin(), offered);  // still there, still offered
@@ -64,7 +65,7 @@ bool EditorWorkspace::applyChoices(EditorUi& ui) {
         } else {
           // Through the open prompt, which first asks about this scene's own unsaved edits.
           ui.panels.openRequest = offered.original;
-          ui.openRecovered = offered.document;
+          ui.openRecovered = offered;
         }
         break;
       case RecoveryChoice::Discard:
@@ -84,20 +85,21 @@ bool EditorWorkspace::applyChoices(EditorUi& ui) {
     const fs::path request = ui.panels.openRequest;
     try {
       std::unique_ptr<EditorSession> opened = ui.openRecovered
-                                                  ? std::make_unique<EditorSession>(request, *ui.openRecovered)
+                                                  ? std::make_unique<EditorSession>(request, ui.openRecovered->document)
                                                   : std::make_unique<EditorSession>(request);
       // The scene left behind was saved or its edits discarded at the prompt (or it had none).
       if (!wroteAutosaveOf_.empty()) autosave_.discard(wroteAutosaveOf_);
       const bool recovered = ui.openRecovered.has_value();
       replaceSession(std::move(opened), recovered);
-      if (recovered) {
-        session_->status = "opened " + request.filename().string() + " with its recovered edits";
-      } else {
-        offerAutosaveOf(request, ui);
-      }
       ui.panels.cloth = 0;
       ui.panels.obstacle = -1;
       ui.panels.tools.clear();  // their unsaved tags were saved or discarded at the prompt
+      if (recovered) {
+        session_->status = "opened " + request.filename().string() + " with its recovered edits";
+        recoverToolTags(*ui.openRecovered, ui.panels.tools);
+      } else {
+        offerAutosaveOf(request, ui);
+      }
       replaced = true;
     } catch (const InputError& e) {
       session_->status = std::string("cannot open: ") + e.what();
@@ -111,17 +113,33 @@ bool EditorWorkspace::applyChoices(EditorUi& ui) {
   return replaced;
 }
 
-void EditorWorkspace::writeAutosave() {
-  if (!recovered_ && session_->document().history().revision() == startRevision_) return;
-  if (!session_->dirty()) return;
-  session_->autosave(autosave_);
+void EditorWorkspace::recoverToolTags(const Recovery& recovery, ToolTagEditors& tools) {
+  tools.clear();
+  const std::string status = session_->status;  // each recovered tool's commit says it too
+  const std::vector<std::string> skipped = tools.recover(*session_, recovery.toolTags);
+  session_->status = status;
+  if (recovery.toolTags.size() > skipped.size()) session_->status += ", and the tools' unsaved sharp tags";
+  if (!skipped.empty()) {
+    std::string names;
+    for (const std::string& name : skipped) names += (names.empty() ? "" : ", ") + name;
+    session_->status += "; the autosaved tags of " + names + " were not recovered: the tool is gone from the scene, or its mesh no longer has the tagged vertices";
+  }
+}
+
+void EditorWorkspace::writeAutosave(const ToolTagEditors& tools) {
+  const std::vector<UnsavedToolTags> toolTags = tools.unsavedTags();
+  // Tags are the user's own edits from the first one (none exists before the first frame).
+  if (!recovered_ && session_->document().history().revision() == startRevision_ && toolTags.empty()) return;
+  if (!session_->dirty() && toolTags.empty()) return;
+  session_->autosave(autosave_, toolTags);
   wroteAutosaveOf_ = session_->document().file();
 }
 
-void EditorWorkspace::forgetAutosaveWhenClean() {
+void EditorWorkspace::forgetAutosaveWhenClean(const ToolTagEditors& tools) {
   if (wroteAutosaveOf_.empty()) return;
   // Saved as another file: the autosave under the old name would be offered for the wrong file.
-  if (session_->dirty() && wroteAutosaveOf_ == session_->document().file()) return;
+  const bool unsaved = session_->dirty() || !tools.unsavedToolNames().empty();
+  if (unsaved && wroteAutosaveOf_ == session_->document().file()) return;
   autosave_.discard(wroteAutosaveOf_);
   wroteAutosaveOf_.clear();
 }

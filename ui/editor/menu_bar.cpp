@@ -49,13 +49,13 @@ void drawEditMenu(EditorSession& session, PanelState& state) {
   const bool open = ImGui::BeginMenu("Edit");
   recordWidget(state, "menu/edit");
   if (!open) return;
-  ToolTagEditor* tool = state.tools.current();
-  if (ImGui::MenuItem(("Undo " + latestUndoLabel(session, tool)).c_str(), "Ctrl+Z", false, canUndoLatest(session, tool))) {
-    undoLatest(session, tool);
+  ToolTagEditors& tools = state.tools;
+  if (ImGui::MenuItem(("Undo " + latestUndoLabel(session, tools)).c_str(), "Ctrl+Z", false, canUndoLatest(session, tools))) {
+    undoLatest(session, tools);
   }
   recordWidget(state, "menu/undo");
-  if (ImGui::MenuItem(("Redo " + latestRedoLabel(session, tool)).c_str(), "Ctrl+Y", false, canRedoLatest(session, tool))) {
-    redoLatest(session, tool);
+  if (ImGui::MenuItem(("Redo " + latestRedoLabel(session, tools)).c_str(), "Ctrl+Y", false, canRedoLatest(session, tools))) {
+    redoLatest(session, tools);
   }
   recordWidget(state, "menu/redo");
   ImGui::EndMenu();
@@ -140,16 +140,16 @@ void drawHelp(EditorUi& ui) {
 void applyEditShortcuts(EditorSession& session, PanelState& state) {
   const ImGuiIO& io = ImGui::GetIO();
   if (!io.KeyCtrl) return;
-  ToolTagEditor* tool = state.tools.current();
+  ToolTagEditors& tools = state.tools;  // every tool's tags: the one history (shared_undo.h)
   // Shift+Z is checked before Z alone: with Shift held, Ctrl+Z redoes (as in most editors).
   if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Z))) {
     if (io.KeyShift) {
-      redoLatest(session, tool);
+      redoLatest(session, tools);
     } else {
-      undoLatest(session, tool);
+      undoLatest(session, tools);
     }
   }
-  if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Y))) redoLatest(session, tool);
+  if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Y))) redoLatest(session, tools);
 }
 
 void drawMenuBar(EditorSession& session, EditorUi& ui) {

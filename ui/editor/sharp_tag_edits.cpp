@@ -1,10 +1,12 @@
 #include "sharp_tag_edits.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
 #include <string>
+#include <system_error>
 
 #include "contact/obstacle.h"
 #include "editor/installed_data.h"
@@ -164,7 +166,7 @@ void ToolTagEditor::undo(EditorSession& session) {
   const std::string label = document_.history().undoLabel();
   document_.history().undo();
   applyToWorld(session);
-  session.status = "undo " + label;
+  session.status = "undo " + label + " on " + name_;
 }
 
 void ToolTagEditor::redo(EditorSession& session) {
@@ -172,7 +174,7 @@ void ToolTagEditor::redo(EditorSession& session) {
   const std::string label = document_.history().redoLabel();
   document_.history().redo();
   applyToWorld(session);
-  session.status = "redo " + label;
+  session.status = "redo " + label + " on " + name_;
 }
 
 void ToolTagEditor::commit(EditorSession& session, const SharpTags& tags, const std::string& label) {
@@ -182,9 +184,65 @@ void ToolTagEditor::commit(EditorSession& session, const SharpTags& tags, const 
   session.status = label + " (save the tags to keep them)";
 }
 
+namespace {
+
+std::filesystem::path canonicalOf(const std::filesystem::path& file) {
+  std::error_code ec;
+  std::filesystem::path resolved = std::filesystem::weakly_canonical(file, ec);
+  return ec ? file.lexically_normal() : resolved;
+}
+
+// The obstacle of the scene, other than `obstacle`, that reads its tags from `file` (tags kept in
+// the scene read none).
+std::optional<std::string> otherReaderOf(const Scene& scene, int obstacle, const std::filesystem::path& file) {
+  const std::filesystem::path wanted = canonicalOf(file);
+  for (std::size_t i = 0; i < scene.obstacles.size(); ++i) {
+    const ObstacleSpec& other = scene.obstacles[i];
+    if (static_cast<int>(i) == obstacle || !other.shape.sharpTagsInline.is_null()) continue;
+    const std::optional<std::filesystem::path> theirs = sharpTagsFileOf(other);
+    if (theirs && canonicalOf(*theirs) == wanted) return other.name;
+  }
+  return std::nullopt;
+}
+
+// An obstacle's name as part of a file name: letters, digits, '-' and '_' kept, the rest '-'.
+std::string fileNamePart(const std::string& name) {
+  std::string part;
+  for (const char c : name) part += std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' ? c : '-';
+  return part.empty() ? "tool" : part;
+}
+
+}  // namespace
+
+std::optional<std::string> ToolTagEditor::tagsFileSharedWith(const EditorSession& session) const {
+  if (inScene_) return std::nullopt;
+  return otherReaderOf(session.scene(), obstacle_, document_.file());
+}
+
+std::filesystem::path ToolTagEditor::saveToToolFile(EditorSession& session) {
+  if (tagsFileSharedWith(session)) return saveBesideSceneAs(session, ownFileName(session));
+  document_.save();
+  return document_.file();
+}
+
 std::filesystem::path ToolTagEditor::saveBesideScene(EditorSession& session) {
   const ObstacleSpec& spec = session.scene().obstacles.at(static_cast<std::size_t>(obstacle_));
-  const std::filesystem::path name = sharpTagsPathFor(spec.shape.meshPath).filename();
+  const std::filesystem::path folder = session.document().file().parent_path();
+  // MESH.sharp.json, unless another obstacle of the scene reads that file.
+  const std::filesystem::path name = spec.shape.meshPath.stem().string() + ".sharp.json";
+  return saveBesideSceneAs(session, otherReaderOf(session.scene(), obstacle_, folder / name) ? ownFileName(session) : name);
+}
+
+std::filesystem::path ToolTagEditor::ownFileName(const EditorSession& session) const {
+  const std::filesystem::path folder = session.document().file().parent_path();
+  const std::string stem = session.document().file().stem().string() + "." + fileNamePart(name_);
+  std::filesystem::path name = stem + ".sharp.json";
+  // Two obstacles of one name: the second also by its index.
+  if (otherReaderOf(session.scene(), obstacle_, folder / name)) name = stem + "-" + std::to_string(obstacle_) + ".sharp.json";
+  return name;
+}
+
+std::filesystem::path ToolTagEditor::saveBesideSceneAs(EditorSession& session, const std::filesystem::path& name) {
   const std::filesystem::path file = session.document().file().parent_path() / name;
   if (isInstalledData(file)) {  // the scene is shipped too: beside it is Weft's own folder
     throw std::runtime_error(session.document().file().filename().string() +
@@ -193,6 +251,25 @@ std::filesystem::path ToolTagEditor::saveBesideScene(EditorSession& session) {
   document_.saveAs(file);
   session.edit(withSharpTagsFile(session.json(), obstacle_, name.string()), "sharp tags of " + name_ + " beside the scene");
   return file;
+}
+
+void ToolTagEditor::recover(EditorSession& session, const nlohmann::json& tags) {
+  // An autosave is a file like any other: its tags are checked against the mesh before they reach
+  // the world, and put in canonical form (the toggles keep them sorted).
+  SharpTags recovered = sharpTagsFromJson(tags);
+  const int vertices = static_cast<int>(session.world().obstacle(obstacle_).bodyVertices.size());
+  for (int v : recovered.vertices) {
+    if (v < 0 || v >= vertices) throw std::invalid_argument("no vertex " + std::to_string(v) + " on " + name_);
+  }
+  for (auto& e : recovered.edges) {
+    if (e[0] > e[1]) std::swap(e[0], e[1]);
+    if (e[0] < 0 || e[1] >= vertices || e[0] == e[1]) throw std::invalid_argument("no such edge on " + name_);
+  }
+  std::sort(recovered.vertices.begin(), recovered.vertices.end());
+  recovered.vertices.erase(std::unique(recovered.vertices.begin(), recovered.vertices.end()), recovered.vertices.end());
+  std::sort(recovered.edges.begin(), recovered.edges.end());
+  recovered.edges.erase(std::unique(recovered.edges.begin(), recovered.edges.end()), recovered.edges.end());
+  commit(session, recovered, "recover autosaved sharp tags of " + name_);
 }
 
 void ToolTagEditor::saveInScene(EditorSession& session) {

@@ -55,15 +55,29 @@ class ToolTagEditor {
   // Tags `edges` sharp (a box select), as one undo step labelled `label`. Returns how many were
   // newly tagged.
   int tagEdges(EditorSession& session, const std::vector<std::array<int, 2>>& edges, const std::string& label);
-  // This document's own step back or forward (no-op when none). The editor's Undo and Redo go
-  // through shared_undo.h, which calls these when the tags hold the latest step.
+  // This document's own step back or forward (no-op when none); the status names the tool. The
+  // editor's Undo and Redo go through shared_undo.h, which calls these when the tags hold the
+  // latest step.
   void undo(EditorSession& session);
   void redo(EditorSession& session);
   void save() { document_.save(); }  // atomic, FILE.bak kept
-  // Saves the tags beside the scene instead (SCENE_FOLDER/MESH.sharp.json) and points the scene's
-  // obstacle at that file ("sharp_tags"), so a shipped tool's file is left alone and other scenes
-  // using the tool are not changed. Returns the file written.
+  // Tags are per obstacle: two obstacles of one scene on one mesh read one tags file, and saving
+  // one's tags there would change the other's unseen. So the tool's own file is written only when
+  // no other obstacle of the scene reads it; else the tags go beside the scene in a file of this
+  // obstacle's own, SCENE.OBSTACLE.sharp.json, and the scene points there (a scene edit, saved
+  // with the scene). Returns the file written.
+  std::filesystem::path saveToToolFile(EditorSession& session);
+  // The name of another obstacle of the scene that reads this tool's tags file (none: no other).
+  std::optional<std::string> tagsFileSharedWith(const EditorSession& session) const;
+  // Saves the tags beside the scene instead (SCENE_FOLDER/MESH.sharp.json, or
+  // SCENE.OBSTACLE.sharp.json when another obstacle of the scene reads that one) and points the
+  // scene's obstacle at that file ("sharp_tags"), so a shipped tool's file is left alone and other
+  // scenes and obstacles using the tool are not changed. Returns the file written.
   std::filesystem::path saveBesideScene(EditorSession& session);
+  // Recovered from an autosave (autosave.h): `tags` (sharpTagsJson's format) become the tool's,
+  // one undo step, unsaved. Throws std::invalid_argument (nothing changes) when they name a vertex
+  // the mesh does not have, or are not tags at all.
+  void recover(EditorSession& session, const nlohmann::json& tags);
   // Keeps the tags in the scene itself ("sharp_tags": {...} in the obstacle's mesh), as one
   // scene edit (saved with the scene): no file beside the mesh or the scene is written.
   void saveInScene(EditorSession& session);
@@ -78,6 +92,10 @@ class ToolTagEditor {
 
  private:
   void commit(EditorSession& session, const SharpTags& tags, const std::string& label);
+  // SCENE.OBSTACLE.sharp.json (the obstacle's name made safe for a file name), a file no other
+  // obstacle of the scene reads.
+  std::filesystem::path ownFileName(const EditorSession& session) const;
+  std::filesystem::path saveBesideSceneAs(EditorSession& session, const std::filesystem::path& name);
   void applyToWorld(EditorSession& session) const;
 
   int obstacle_;

@@ -1,5 +1,7 @@
 #include "editor/tool_tag_editors.h"
 
+#include <exception>
+#include <filesystem>
 #include <tuple>
 
 namespace weft::editor {
@@ -56,6 +58,50 @@ std::vector<std::string> ToolTagEditors::reapplyAfterReset(EditorSession& sessio
   return dropped;
 }
 
+std::vector<ToolTagEditor*> ToolTagEditors::editors() {
+  std::vector<ToolTagEditor*> all;
+  for (auto& [obstacle, kept] : kept_) all.push_back(&kept.editor);
+  return all;
+}
+
+std::vector<const ToolTagEditor*> ToolTagEditors::editors() const {
+  std::vector<const ToolTagEditor*> all;
+  for (const auto& [obstacle, kept] : kept_) all.push_back(&kept.editor);
+  return all;
+}
+
+std::vector<UnsavedToolTags> ToolTagEditors::unsavedTags() const {
+  std::vector<UnsavedToolTags> unsaved;
+  for (const auto& [obstacle, kept] : kept_) {
+    const ToolTagEditor& tool = kept.editor;
+    if (!tool.document().dirty()) continue;
+    unsaved.push_back(UnsavedToolTags{obstacle, tool.name(), tool.inScene() ? std::filesystem::path() : tool.document().file(),
+                                      tool.inScene(), tool.document().json()});
+  }
+  return unsaved;
+}
+
+std::vector<std::string> ToolTagEditors::recover(EditorSession& session, const std::vector<UnsavedToolTags>& tags) {
+  std::vector<std::string> skipped;
+  const auto& obstacles = session.scene().obstacles;
+  for (const UnsavedToolTags& recovered : tags) {
+    const bool there = recovered.obstacle >= 0 && recovered.obstacle < static_cast<int>(obstacles.size()) &&
+                       obstacles[static_cast<std::size_t>(recovered.obstacle)].name == recovered.tool;
+    if (!there) {
+      skipped.push_back(recovered.tool);
+      continue;
+    }
+    const int wasCurrent = current_;
+    try {
+      select(session, recovered.obstacle).recover(session, recovered.tags);
+    } catch (const std::exception&) {
+      skipped.push_back(recovered.tool);  // a generated shape now, or tags its mesh cannot have
+    }
+    current_ = wasCurrent;
+  }
+  return skipped;
+}
+
 std::vector<std::string> ToolTagEditors::unsavedToolNames() const {
   std::vector<std::string> names;
   for (const auto& [obstacle, kept] : kept_) {
@@ -73,7 +119,7 @@ void ToolTagEditors::saveUnsaved(EditorSession& session) {
     } else if (tool.savesIntoInstalledData()) {
       tool.saveBesideScene(session);
     } else {
-      tool.save();
+      tool.saveToToolFile(session);
     }
   }
 }

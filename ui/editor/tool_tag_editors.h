@@ -3,12 +3,14 @@
 // obstacle, kept until the scene is left. Picking another tool in the Tools panel only changes
 // which one is current, so the first tool's unsaved tags and their undo steps are still there when
 // it is picked again (the product rule: the editor never loses a user's edits). The current one is
-// what the Tools panel, the viewport's tag clicks and the shared Undo (shared_undo.h) work on; the
+// what the Tools panel and the viewport's tag clicks work on. The shared Undo (shared_undo.h)
+// reaches every one's steps, the autosave keeps every one's unsaved tags (autosave.h), and the
 // unsaved-changes prompts (quit, open another scene) ask about all of them.
 #include <map>
 #include <string>
 #include <vector>
 
+#include "editor/autosave.h"
 #include "editor/editor_session.h"
 #include "editor/sharp_tag_edits.h"
 
@@ -33,11 +35,24 @@ class ToolTagEditors {
   // unsaved tags.
   std::vector<std::string> reapplyAfterReset(EditorSession& session);
 
+  // Every kept editor, by obstacle index: what the shared Undo looks through.
+  std::vector<ToolTagEditor*> editors();
+  std::vector<const ToolTagEditor*> editors() const;
+
+  // The unsaved tags of every tool, for the autosave (none: every tool's tags are saved).
+  std::vector<UnsavedToolTags> unsavedTags() const;
+  // Recovery from an autosave, on the scene it was recovered into: each tool's tags become its
+  // kept editor's, unsaved (ToolTagEditor::recover); none is made current. A tool no longer at its
+  // index (by name), no longer a mesh, or whose mesh cannot have the tags, is skipped; returns the
+  // names of those.
+  std::vector<std::string> recover(EditorSession& session, const std::vector<UnsavedToolTags>& tags);
+
   // The tools whose tags were edited and are not saved (in their file or in the scene), by name.
   std::vector<std::string> unsavedToolNames() const;
   // Saves those tags where the Tools panel's "Save tags" would, without asking: in the scene when
   // they live there, beside the scene for a tool shipped with Weft (its file is shared by other
-  // scenes), else in the tool's tags file. A tool kept in or beside the scene edits the scene,
+  // scenes), else in the tool's tags file (ToolTagEditor::saveToToolFile: beside the scene when
+  // another obstacle reads that file). A tool kept in or beside the scene edits the scene,
   // which the caller saves next. Throws on the first that cannot be saved (those before it are).
   void saveUnsaved(EditorSession& session);
 

@@ -130,15 +130,14 @@ void drawScenePanel(EditorSession& session, PanelState& state) {
   if (ImGui::Button("Save")) saveScene(session, state);
   recordWidget(state, "scene/save");
   ImGui::SameLine();
-  // The editor's one history (shared_undo.h): a sharp tag clicked last is undone here too.
-  ToolTagEditor* tool = state.tools.current();
-  ImGui::BeginDisabled(!canUndoLatest(session, tool));
-  if (ImGui::Button("Undo")) undoLatest(session, tool);
+  // The editor's one history (shared_undo.h): a sharp tag clicked last, on any tool, is undone here too.
+  ImGui::BeginDisabled(!canUndoLatest(session, state.tools));
+  if (ImGui::Button("Undo")) undoLatest(session, state.tools);
   recordWidget(state, "scene/undo");
   ImGui::EndDisabled();
   ImGui::SameLine();
-  ImGui::BeginDisabled(!canRedoLatest(session, tool));
-  if (ImGui::Button("Redo")) redoLatest(session, tool);
+  ImGui::BeginDisabled(!canRedoLatest(session, state.tools));
+  if (ImGui::Button("Redo")) redoLatest(session, state.tools);
   recordWidget(state, "scene/redo");
   ImGui::EndDisabled();
   if (state.browser != nullptr) {

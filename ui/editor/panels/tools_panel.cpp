@@ -1,7 +1,8 @@
 // Tools: pick a tool, tag its vertices and edges sharp by clicking them in the viewport (sharp
 // parts are drawn red), undo, and save the tags: beside the tool's mesh, or, for a tool shipped
-// with Weft, beside the scene unless the user says to change the shipped file; throw a ball from
-// the camera.
+// with Weft or one whose tags file another obstacle of the scene reads too, beside the scene
+// (the shipped one unless the user says to change the shipped file); throw a ball from the camera.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -23,9 +24,14 @@ void saveTags(EditorSession& session, ToolTagEditor& tool, TagsGoTo where) {
     } else if (where == TagsGoTo::BesideScene) {
       const std::filesystem::path file = tool.saveBesideScene(session);
       session.status = "saved " + file.string() + "; the scene reads the tags from there";
+    } else if (const std::optional<std::string> other = tool.tagsFileSharedWith(session)) {
+      // Tags are per obstacle (sharp_tag_edits.h): the other's file is left as it was.
+      const std::filesystem::path file = tool.saveToToolFile(session);
+      session.status = "saved " + file.string() + ": " + other.value() + " reads " + tool.name() +
+                       "'s old tags file too, so " + tool.name() + " has its own now; save the scene to keep it";
     } else {
-      tool.save();
-      session.status = "saved " + tool.document().file().string();
+      const std::filesystem::path file = tool.saveToToolFile(session);
+      session.status = "saved " + file.string();
     }
   } catch (const std::exception& e) {
     session.status = std::string("tags not saved: ") + e.what();
@@ -138,15 +144,16 @@ void drawToolsPanel(EditorSession& session, PanelState& state) {
     ImGui::InputDouble("deg", &state.sharperThanDeg, 0.0, 0.0, "%.0f", ImGuiInputTextFlags_AutoSelectAll);
     // The editor's one history (shared_undo.h), as Ctrl+Z: a tag's own undo here would take back
     // an older tag while a newer parameter edit stays, an order no other Undo follows.
-    ImGui::BeginDisabled(!canUndoLatest(session, tool));
-    if (ImGui::Button("Undo")) undoLatest(session, tool);
-    if (ImGui::IsItemHovered() && canUndoLatest(session, tool)) ImGui::SetTooltip("undo %s (Ctrl+Z)", latestUndoLabel(session, tool).c_str());
+    ToolTagEditors& tools = state.tools;
+    ImGui::BeginDisabled(!canUndoLatest(session, tools));
+    if (ImGui::Button("Undo")) undoLatest(session, tools);
+    if (ImGui::IsItemHovered() && canUndoLatest(session, tools)) ImGui::SetTooltip("undo %s (Ctrl+Z)", latestUndoLabel(session, tools).c_str());
     recordWidget(state, "tools/undo");
     ImGui::EndDisabled();
     ImGui::SameLine();
-    ImGui::BeginDisabled(!canRedoLatest(session, tool));
-    if (ImGui::Button("Redo")) redoLatest(session, tool);
-    if (ImGui::IsItemHovered() && canRedoLatest(session, tool)) ImGui::SetTooltip("redo %s (Ctrl+Y)", latestRedoLabel(session, tool).c_str());
+    ImGui::BeginDisabled(!canRedoLatest(session, tools));
+    if (ImGui::Button("Redo")) redoLatest(session, tools);
+    if (ImGui::IsItemHovered() && canRedoLatest(session, tools)) ImGui::SetTooltip("redo %s (Ctrl+Y)", latestRedoLabel(session, tools).c_str());
     recordWidget(state, "tools/redo");
     ImGui::EndDisabled();
     ImGui::SameLine();
