@@ -300,7 +300,7 @@ Command addBenchCommand(CLI::App& app) {
   CLI::App* cli = app.add_subcommand("bench", "Time the hanging sheet over sizes, integrators and linear solvers");
   cli->add_option("--sizes", options->sizes, "Grid resolutions (vertices per side), comma-separated")
       ->delimiter(',')
-      ->check(CLI::Range(2, 4096))
+      ->check(integerIn(2, 4096))
       ->capture_default_str();
   cli->add_option("--integrators", options->integrators,
                   "Any of lbe, newton, symplectic, bdf2, bdf2n (BDF2 solved by Newton), comma-separated")
@@ -330,30 +330,30 @@ Command addBenchCommand(CLI::App& app) {
                 "Instead of timing sizes, measure the error each accuracy knob leaves (time step, Newton iterations, "
                 "CG tolerance, resolution) and its cost");
   cli->add_option("--accuracy-duration", options->accuracyOptions.duration, "Accuracy study: simulated seconds compared")
-      ->check(CLI::PositiveNumber)
+      ->check(numberIn(0.001, 60.0))
       ->capture_default_str();
   cli->add_option("--accuracy-resolution", options->accuracyOptions.resolution,
                   "Accuracy study: grid vertices per side (2^k + 1 keeps the resolution study's points shared)")
-      ->check(CLI::Range(3, 257))
+      ->check(integerIn(3, 257))
       ->capture_default_str();
   cli->add_option("--accuracy-csv", options->accuracyOptions.csv, "Accuracy study: CSV output file")->capture_default_str();
   cli->add_flag("--contact", options->contact,
                 "Instead of timing sizes, time the collision stage of a sheet draped on a sphere, with and without "
                 "self-collision");
   cli->add_option("--contact-resolution", options->contactOptions.resolution, "Contact benchmark: grid vertices per side")
-      ->check(CLI::Range(4, 1024))
+      ->check(integerIn(4, 1024))
       ->capture_default_str();
   cli->add_option("--contact-warmup", options->contactOptions.warmup,
                   "Contact benchmark: untimed steps before timing (90: the sheet has just draped and still slides; "
                   "600: ten seconds in, folded at its hem)")
-      ->check(CLI::NonNegativeNumber)
+      ->check(integerIn(0, 1'000'000))
       ->capture_default_str();
   cli->add_option("--contact-csv", options->contactOptions.csv, "Contact benchmark: CSV output file")->capture_default_str();
   cli->add_flag("--tearing", options->tearing,
                 "Instead of timing sizes, time the tearing stage of a sheet pulled apart, for the thesis' and the dense "
                 "candidate lines, with and without the bound that skips quiet vertices");
   cli->add_option("--tearing-resolution", options->tearingOptions.resolution, "Tearing benchmark: grid vertices per side")
-      ->check(CLI::Range(4, 1024))
+      ->check(integerIn(4, 1024))
       ->capture_default_str();
   cli->add_option("--tearing-rows", options->tearingOptions.rows,
                   "Tearing benchmark: the configurations timed (thesis, thesis-unbounded, dense, dense-unbounded, "
@@ -367,7 +367,7 @@ Command addBenchCommand(CLI::App& app) {
                 "residuals reached");
   cli->add_option("--solver-accuracy-duration", options->solverAccuracyOptions.duration,
                   "Solver accuracy: simulated seconds")
-      ->check(CLI::PositiveNumber)
+      ->check(numberIn(0.001, 60.0))
       ->capture_default_str();
   cli->add_option("--solver-accuracy-csv", options->solverAccuracyOptions.csv, "Solver accuracy: CSV output file")
       ->capture_default_str();

@@ -187,7 +187,7 @@ Command addStudyVideosCommand(CLI::App& app) {
       "textured and texture-hidden MP4s (ffmpeg) and manifest.json");
   cli->add_option("--out", options->out, "Output folder (default: study-clips)");
   cli->add_option("--seconds-per-part", options->secondsPerPart, "Seconds of each of the three parts (default 5)")
-      ->check(CLI::Range(0.01, 60.0));
+      ->check(numberIn(0.01, 60.0));
   cli->add_option("--width", options->width, "Frame width in pixels (default 960)")->check(integerIn(16, 8192));
   cli->add_option("--height", options->height, "Frame height in pixels (default 720)")->check(integerIn(16, 8192));
   cli->add_flag("--quiet,-q", options->quiet, "Print nothing but errors");

@@ -384,6 +384,27 @@ TEST_F(WeftCli, UsageErrorsExit2) {
   EXPECT_EQ(weft("--help").exitCode, 0);
 }
 
+// CLI11's own number checks let "nan" through (every comparison with NaN is false): a NaN
+// duration ran the accuracy study on it, and NaN seconds rendered study clips.
+TEST_F(WeftCli, NumbersOnTheCommandLineMustBeFiniteAndInRange) {
+  for (const std::string args : {"bench --accuracy --accuracy-duration nan --accuracy-csv acc.csv",
+                                 "bench --accuracy --accuracy-duration 1e308 --accuracy-csv acc.csv",
+                                 "bench --solver-accuracy --solver-accuracy-duration inf",
+                                 "bench --contact --contact-warmup -1", "bench --sizes 6,abc",
+                                 "study-videos --out clips --seconds-per-part nan",
+                                 "study-videos --out clips --seconds-per-part 0.5s"}) {
+    const Result r = weft(args);
+    EXPECT_EQ(r.exitCode, 2) << args << "\n" << r.output;
+    EXPECT_TRUE(r.output.find("is not a number in") != std::string::npos ||
+                r.output.find("is outside") != std::string::npos ||
+                r.output.find("is not an integer in") != std::string::npos)
+        << args << "\n" << r.output;
+    EXPECT_LT(r.output.size(), 400u) << args;
+  }
+  EXPECT_FALSE(fs::exists(work() / "acc.csv"));
+  EXPECT_FALSE(fs::exists(work() / "clips"));
+}
+
 TEST_F(WeftCli, BenchWritesACsvNamingTheMachine) {
   const Result r = weft("bench --sizes 6 --integrators lbe,symplectic --solvers cg --steps 2 --warmup 1 --repeats 3 "
                         "--csv bench/out.csv");
