@@ -51,9 +51,10 @@ std::set<std::string> answeredClips(const std::string& answersFile, const std::s
 }
 
 int guessFabrics(const GuessOptions& options) {
-  if (options.participant.empty() || options.participant.find_first_of(",\"\n\r") != std::string::npos) {
+  if (options.participant.empty() || options.participant.size() > 64 ||
+      options.participant.find_first_of(",\"\n\r") != std::string::npos) {
     std::cerr << "weft: guess: --participant: '" << echo(options.participant, 60)
-              << "' must be non-empty, without commas or quotes (it goes into a CSV)\n";
+              << "' must be 1 to 64 characters, without commas or quotes (it goes into a CSV)\n";
     return kExitBadInput;
   }
   // Everything the session needs is checked before the first clip is shown.

@@ -51,48 +51,58 @@ ClipManifest readClipManifest(const std::filesystem::path& file) {
   } catch (const nlohmann::json::exception& e) {
     throw InputError(name, "", std::string("not JSON: ") + e.what());
   }
-  // Every field's type is checked by nlohmann's get<>(); its message is passed on with the path.
+  // Each field read with its JSON pointer, so a wrong type names the field, not nlohmann's code.
   const auto field = [&](const nlohmann::json& object, const char* key, const std::string& pointer) -> const nlohmann::json& {
     if (!object.is_object() || !object.contains(key)) throw InputError(name, pointer + "/" + key, "missing");
     return object.at(key);
   };
-  ClipManifest manifest;
-  try {
-    if (field(j, "format", "").get<std::string>() != kFormat)
-      throw InputError(name, "/format", std::string("expected \"") + kFormat + "\"");
-    if (field(j, "version", "").get<int>() != kVersion)
-      throw InputError(name, "/version", "unsupported version (this weft reads version 1)");
-    manifest.fps = field(j, "fps", "").get<double>();
-    manifest.secondsPerPart = field(j, "seconds_per_part", "").get<double>();
-    manifest.framesPerPart = field(j, "frames_per_part", "").get<int>();
-    const auto size = field(j, "size", "").get<std::vector<int>>();
-    if (size.size() != 2) throw InputError(name, "/size", "expected [width, height]");
-    manifest.width = size[0];
-    manifest.height = size[1];
-    manifest.parts = field(j, "parts", "").get<std::vector<std::string>>();
-    const nlohmann::json& clips = field(j, "clips", "");
-    if (!clips.is_array()) throw InputError(name, "/clips", "expected an array");
-    std::set<std::string> ids;
-    for (std::size_t i = 0; i < clips.size(); ++i) {
-      const std::string pointer = "/clips/" + std::to_string(i);
-      StudyClip clip;
-      clip.id = field(clips[i], "id", pointer).get<std::string>();
-      const std::string fabric = field(clips[i], "fabric", pointer).get<std::string>();
-      const auto parsed = parseFabric(fabric);
-      if (!parsed)
-        throw InputError(name, pointer + "/fabric",
-                         "unknown fabric '" + echo(fabric, 60) + "' (expected denim, t-shirt, pants or swimsuit)");
-      clip.fabric = *parsed;
-      clip.textured = field(clips[i], "textured", pointer).get<bool>();
-      clip.file = field(clips[i], "file", pointer).get<std::string>();
-      clip.frames = field(clips[i], "frames", pointer).get<int>();
-      if (clip.id.empty() || clip.id.find(',') != std::string::npos)
-        throw InputError(name, pointer + "/id", "a clip id must be non-empty and without commas (it goes into a CSV)");
-      if (!ids.insert(clip.id).second) throw InputError(name, pointer + "/id", "clip '" + echo(clip.id, 60) + "' appears twice");
-      manifest.clips.push_back(std::move(clip));
+  const auto read = [&]<typename T>(const nlohmann::json& object, const char* key, const std::string& pointer,
+                                    const char* expected, T& out) {
+    try {
+      out = field(object, key, pointer).get<T>();
+    } catch (const nlohmann::json::exception&) {
+      throw InputError(name, pointer + "/" + key, std::string("expected ") + expected);
     }
-  } catch (const nlohmann::json::exception& e) {
-    throw InputError(name, "", std::string("malformed clip manifest: ") + e.what());
+  };
+  ClipManifest manifest;
+  std::string format;
+  int version = 0;
+  read(j, "format", "", "a string", format);
+  if (format != kFormat) throw InputError(name, "/format", std::string("expected \"") + kFormat + "\"");
+  read(j, "version", "", "an integer", version);
+  if (version != kVersion) throw InputError(name, "/version", "unsupported version (this weft reads version 1)");
+  read(j, "fps", "", "a number", manifest.fps);
+  if (!(manifest.fps > 0.0 && manifest.fps <= 1000.0)) throw InputError(name, "/fps", "expected a number in (0, 1000]");
+  read(j, "seconds_per_part", "", "a number", manifest.secondsPerPart);
+  read(j, "frames_per_part", "", "an integer", manifest.framesPerPart);
+  std::vector<int> size;
+  read(j, "size", "", "[width, height] in pixels", size);
+  if (size.size() != 2 || size[0] < 1 || size[1] < 1) throw InputError(name, "/size", "expected [width, height] in pixels");
+  manifest.width = size[0];
+  manifest.height = size[1];
+  read(j, "parts", "", "an array of strings", manifest.parts);
+  const nlohmann::json& clips = field(j, "clips", "");
+  if (!clips.is_array()) throw InputError(name, "/clips", "expected an array");
+  std::set<std::string> ids;
+  for (std::size_t i = 0; i < clips.size(); ++i) {
+    const std::string pointer = "/clips/" + std::to_string(i);
+    StudyClip clip;
+    read(clips[i], "id", pointer, "a string", clip.id);
+    std::string fabric;
+    read(clips[i], "fabric", pointer, "a string", fabric);
+    const auto parsed = parseFabric(fabric);
+    if (!parsed)
+      throw InputError(name, pointer + "/fabric",
+                       "unknown fabric '" + echo(fabric, 60) + "' (expected denim, t-shirt, pants or swimsuit)");
+    clip.fabric = *parsed;
+    read(clips[i], "textured", pointer, "true or false", clip.textured);
+    read(clips[i], "file", pointer, "a string", clip.file);
+    read(clips[i], "frames", pointer, "an integer", clip.frames);
+    if (clip.frames < 1) throw InputError(name, pointer + "/frames", "expected at least 1");
+    if (clip.id.empty() || clip.id.find(',') != std::string::npos)
+      throw InputError(name, pointer + "/id", "a clip id must be non-empty and without commas (it goes into a CSV)");
+    if (!ids.insert(clip.id).second) throw InputError(name, pointer + "/id", "clip '" + echo(clip.id, 60) + "' appears twice");
+    manifest.clips.push_back(std::move(clip));
   }
   return manifest;
 }

@@ -1,3 +1,4 @@
+#include <algorithm>
 #include "study_report.h"
 
 #include <iomanip>
@@ -83,11 +84,13 @@ void printStudyReport(std::ostream& out, const StudyAnalysis& analysis) {
   const auto oldFlags = out.flags();
   const auto oldPrecision = out.precision();
   out << "Guesses per clip (rows: the clip's fabric; columns: the fabric guessed; thesis Table 4.10)\n";
-  out << "  " << padded("clip", 14) << padded("fabric", 10);
+  std::size_t clipWidth = 14;  // the thesis' clip names; ids such as "swimsuit-hidden" are longer
+  for (const ClipGuesses& clip : analysis.clips) clipWidth = std::max(clipWidth, clip.clip.size() + 2);
+  out << "  " << padded("clip", static_cast<int>(clipWidth)) << padded("fabric", 10);
   for (Fabric fabric : kFabrics) out << padded(std::string(fabricName(fabric)), 10);
   out << "correct\n";
   for (const ClipGuesses& clip : analysis.clips) {
-    out << "  " << padded(clip.clip, 14) << padded(std::string(fabricName(clip.trueFabric)), 10);
+    out << "  " << padded(clip.clip, static_cast<int>(clipWidth)) << padded(std::string(fabricName(clip.trueFabric)), 10);
     for (int count : clip.guesses) out << padded(std::to_string(count), 10);
     out << clip.guesses[static_cast<std::size_t>(indexOf(clip.trueFabric))] << "/" << clip.answers << "\n";
   }

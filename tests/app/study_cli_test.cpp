@@ -342,6 +342,17 @@ TEST_F(Guess, AParticipantIdWithACommaIsRefused) {
   EXPECT_NE(r.output.find("--participant"), std::string::npos) << r.output;
 }
 
+TEST_F(Guess, AParticipantIdLongerThan64CharactersIsRefusedAndNotEchoedInFull) {
+  const fs::path script = dir_.write("answers.txt", "denim\ndenim\ndenim\ndenim\n");
+  const std::string id(300, 'x');
+  const Result r = weft(dir_.path(), "guess --clips clips --answers answers.csv --participant " + id +
+                                         " --answers-from '" + script.string() + "'");
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  EXPECT_NE(r.output.find("1 to 64 characters"), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find(id), std::string::npos) << "the id is echoed capped";
+  EXPECT_FALSE(fs::exists(dir_.path() / "answers.csv"));
+}
+
 TEST_F(Guess, WithoutADisplayOrAnswersFileSaysHowToAnswer) {
   const Result r = weft(dir_.path(), "guess --clips clips --answers answers.csv --participant p01", "env -u DISPLAY");
   EXPECT_EQ(r.exitCode, 1) << r.output;

@@ -137,6 +137,39 @@ TEST_F(StudyFiles, AClipManifestWithAnUnknownFabricNamesTheField) {
   }
 }
 
+// A field of the wrong type is named by its pointer (nlohmann's own message named only its
+// error code), and a number that cannot be right is refused.
+TEST_F(StudyFiles, AClipManifestWithAWrongTypedFieldNamesIt) {
+  const fs::path file = root_ / "manifest.json";
+  const std::string clip = R"([{"id": "x", "fabric": "denim", "textured": false, "file": "x.mp4", "frames": FRAMES}])";
+  const std::vector<std::pair<std::string, std::string>> cases{
+      {R"("fps": null)", "/fps"}, {R"("fps": -3)", "/fps"}, {R"("size": [64])", "/size"},
+      {R"("size": "64x48")", "/size"}, {R"("fps": 30, "frames": "nine")", ""}};
+  for (const auto& [change, pointer] : cases) {
+    std::string fields = R"("fps": 30, "size": [64, 48])";
+    std::string frames = "1";
+    if (change.find("frames") != std::string::npos) {
+      frames = "\"nine\"";
+    } else if (change.rfind("\"fps\"", 0) == 0) {
+      fields = change + R"(, "size": [64, 48])";
+    } else {
+      fields = R"("fps": 30, )" + change;
+    }
+    std::string clips = clip;
+    clips.replace(clips.find("FRAMES"), 6, frames);
+    std::ofstream(file) << R"({"format": "weft-study-clips", "version": 1, )" << fields
+                        << R"(, "seconds_per_part": 5, "frames_per_part": 150, "parts": [], "clips": )" << clips << "}";
+    try {
+      readClipManifest(file);
+      ADD_FAILURE() << change << ": expected InputError";
+    } catch (const InputError& e) {
+      const std::string expected = pointer.empty() ? "/clips/0/frames" : pointer;
+      EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << change << ": " << e.what();
+      EXPECT_EQ(std::string(e.what()).find("json.exception"), std::string::npos) << e.what();
+    }
+  }
+}
+
 TEST_F(StudyFiles, PreparedGuessesTakeTheFabricsGroupWhenNoneIsGiven) {
   const fs::path file = root_ / "guesses.txt";
   std::ofstream(file) << "# participant p07\npants,stretchy\n\nswimsuit\n";
