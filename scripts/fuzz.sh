@@ -4,7 +4,9 @@
 # seed corpus made from presets/ and assets/. Prints each target's executions and time and exits
 # non-zero on a finding (a crash, a sanitizer report, a leak, an unexpected exception, a unit
 # slower than the timeout); the input is left as build-fuzz/crash-*, leak-* or timeout-*.
-#   scripts/fuzz.sh                 the campaign: 1,000,000 executions per target
+#   scripts/fuzz.sh                 the campaign: 1,000,000 executions per loader target, and one
+#                                   hour of world_step (each of its units simulates a scene for up
+#                                   to seconds: 10^6 of them would take days)
 #   scripts/fuzz.sh --seconds 10    a bounded run per target (CI)
 #   scripts/fuzz.sh ... TARGET...   only the named targets (json_text scene material_preset
 #                                   tear_table obj_cloth closed_obj sharp_tags scene_overrides
@@ -97,7 +99,9 @@ for target in "${targets[@]}"; do
   log="build-fuzz/fuzz_$target.log"
   status=0
   start=$(date +%s)
-  (cd build-fuzz && exec "./fuzz/fuzz_$target" "${limit[@]}" -max_len="${max_len[$target]}" -timeout="$timeout" \
+  target_limit=("${limit[@]}")
+  if [ "$target" = world_step ] && [ "${limit[0]}" = -runs=1000000 ]; then target_limit=(-max_total_time=3600); fi
+  (cd build-fuzz && exec "./fuzz/fuzz_$target" "${target_limit[@]}" -max_len="${max_len[$target]}" -timeout="$timeout" \
      "${dict_option[@]}" -print_final_stats=1 "corpus/$target" "seeds/$target") > "$log" 2>&1 &
   pid=$!
   wait "$pid" || status=$?
