@@ -44,7 +44,7 @@ using gallery::GalleryEntry;
 using gallery::ThesisClaim;
 
 struct GalleryOptions {
-  std::string out = "gallery";
+  std::string out = "out/gallery";  // beside `weft run`'s out/SCENE; not gallery/, the sources
   int width = 960;   // of the MP4 and the figure's frame
   int height = 720;
   int sheetWidth = 1200;  // of the contact sheet (its frames are shrunk to fit)
@@ -260,15 +260,29 @@ Command addGalleryCommand(CLI::App& app) {
       "gallery",
       "Render the thesis' Chapter 4 experiments that Weft can run (MP4, contact sheet, measured tear directions) "
       "into a folder with gallery.json; lists those that need cutting as not yet");
-  cli->add_option("--out", options->out, "Output folder (default: gallery)");
-  cli->add_option("--width", options->width, "Frame width in pixels (default 960)")->check(integerIn(16, 8192));
-  cli->add_option("--height", options->height, "Frame height in pixels (default 720)")->check(integerIn(16, 8192));
-  cli->add_option("--sheet-width", options->sheetWidth, "Contact sheet width in pixels (default 1200)")
-      ->check(integerIn(16, 16384));
-  cli->add_flag("--quick", options->quick, "Smoke run: 0.05 s of each scene (reproduces nothing; for tests)");
+  cli->add_option("--out", options->out, "Output folder (default: out/gallery)");
+  CLI::Option* width =
+      cli->add_option("--width", options->width, "Frame width in pixels (default 960; 160 with --quick)")
+          ->check(integerIn(16, 8192));
+  CLI::Option* height =
+      cli->add_option("--height", options->height, "Frame height in pixels (default 720; 120 with --quick)")
+          ->check(integerIn(16, 8192));
+  CLI::Option* sheetWidth =
+      cli->add_option("--sheet-width", options->sheetWidth, "Contact sheet width in pixels (default 1200; 400 with --quick)")
+          ->check(integerIn(16, 16384));
+  cli->add_flag("--quick", options->quick,
+                "Smoke run: 0.05 s of each scene at a tiny size (reproduces nothing; for tests)");
   cli->add_option("--only", options->only, "Only these entries (ids, comma separated)")->delimiter(',');
   cli->add_flag("--quiet,-q", options->quiet, "Print nothing but errors");
-  return {cli, [options] { return writeGallery(*options); }};
+  return {cli, [options, width, height, sheetWidth] {
+            // --quick is a smoke run: tiny pictures unless sizes are given.
+            if (options->quick) {
+              if (width->count() == 0) options->width = 160;
+              if (height->count() == 0) options->height = 120;
+              if (sheetWidth->count() == 0) options->sheetWidth = 400;
+            }
+            return writeGallery(*options);
+          }};
 }
 
 }  // namespace weft::app

@@ -7,7 +7,7 @@ namespace {
 
 // The ball scenes of Table 4.1 run their shipped 0.75 s, and are measured at the end: the ball meets
 // the sheet at about 0.04 s and the cracks have run by 0.3 s; later the torn-off sheet falls. The
-// contact sheet shows the start, the sheet stretched by the ball, the first tears, the cracks
+// contact sheet shows the start, the ball pressing in, the sheet at its most stretched, the cracks
 // running and the torn sheet at 0.3 s (what the thesis' figures show: the pattern of tears).
 // Played four times slower: 0.75 s would be over at once.
 GalleryEntry tableCloth(int cloth, std::string figure, std::string title, std::string says, ThesisClaim claim) {

@@ -9,6 +9,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <utility>
 
 #include <nlohmann/json.hpp>
 
@@ -73,6 +74,27 @@ TEST(Gallery, QuickRunWritesEveryEntrysFilesAndItsDirectionHistogram) {
     EXPECT_EQ(item["measure"].contains("ball_end_m"), entries[i].ball >= 0) << id;
   }
   EXPECT_EQ(ran, 7) << "the hammer, the four cloths of Table 4.1 and the two ceiling balls";
+}
+
+// A PNG's width and height, from its IHDR chunk (bytes 16..23, big-endian).
+std::pair<int, int> pngSize(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  unsigned char header[24] = {};
+  in.read(reinterpret_cast<char*>(header), sizeof header);
+  auto word = [&](int at) { return (header[at] << 24) | (header[at + 1] << 16) | (header[at + 2] << 8) | header[at + 3]; };
+  return {word(16), word(20)};
+}
+
+TEST(Gallery, QuickIsTinyUnlessASizeIsGivenAndOnlyRunsTheChosenEntries) {
+  test::TempDir dir("weft-gallery");
+  const Result r = weft(dir.path(), "gallery --quick --out g --only ceiling-light-ball");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_EQ(pngSize(dir.path() / "g" / "ceiling-light-ball-figure.png"), std::make_pair(160, 120));
+  EXPECT_EQ(pngSize(dir.path() / "g" / "ceiling-light-ball.png"), std::make_pair(396, 57))
+      << "five frames of 76 x 57 and four gaps of 4 px within the sheet's 400";
+  std::ifstream in(dir.path() / "g" / "gallery.json");
+  EXPECT_EQ(nlohmann::json::parse(in)["entries"].size(), 1u);
+  EXPECT_FALSE(fs::exists(dir.path() / "g" / "table4.1-cloth2.mp4"));
 }
 
 TEST(Gallery, AnUnknownEntryIsRefusedBeforeAnythingIsWritten) {
