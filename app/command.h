@@ -27,6 +27,7 @@ Command addEditCommand(CLI::App& app);
 Command addStudyAnalyzeCommand(CLI::App& app);
 Command addStudyVideosCommand(CLI::App& app);
 Command addGuessCommand(CLI::App& app);
+Command addGalleryCommand(CLI::App& app);
 
 // `weft` with no subcommand: `weft edit` on the default scene.
 int editDefaultScene();

@@ -1,6 +1,6 @@
 // `weft`: the command-line entry point. It only parses the command line and hands over to one of
 // the commands (run_command.cpp, validate_command.cpp, bench_command.cpp, edit_command.cpp,
-// study_analyze_command.cpp, study_videos_command.cpp, guess_command.cpp).
+// study_analyze_command.cpp, study_videos_command.cpp, guess_command.cpp, gallery_command.cpp).
 #include <exception>
 #include <iostream>
 #include <vector>
@@ -13,7 +13,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(0, 1);
   const std::vector<Command> commands{addRunCommand(app), addValidateCommand(app), addBenchCommand(app),
                                       addEditCommand(app), addStudyAnalyzeCommand(app),
-                                      addStudyVideosCommand(app), addGuessCommand(app)};
+                                      addStudyVideosCommand(app), addGuessCommand(app), addGalleryCommand(app)};
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
