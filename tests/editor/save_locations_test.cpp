@@ -279,7 +279,8 @@ TEST_F(SaveLocationsTest, TaggingGoesOnWithoutAResetAfterTheTagsAreSavedBesideTh
   ToolTagEditor& tool = *ui_.panels.tools.current();
   tool.toggleVertex(*session_, 1);
   const bool vertex1 = session_->world().obstacle(0).sharpVertex[1];
-  EXPECT_EQ(vertex1, std::binary_search(tool.tags().vertices.begin(), tool.tags().vertices.end(), 1))
+  const SharpTags tagged = tool.tags();  // a copy: begin and end of one vector
+  EXPECT_EQ(vertex1, std::binary_search(tagged.vertices.begin(), tagged.vertices.end(), 1))
       << "the next tag reaches the world";
   imgui_->click(probe_.centre("tools/save"), drawUi());
   EXPECT_EQ(sharpTagsFromJson(json::parse(readText(besideScene))).vertices, tool.tags().vertices)
