@@ -82,6 +82,35 @@ void markSharpFeatures(const SharpTags& tags, Obstacle& obstacle) {
   }
 }
 
+SharpTags sharpTagsOfSpec(const ObstacleSpec& spec, const std::string& sceneFile, int index) {
+  const std::string shapePointer = obstaclePointer(index) + "/shape";
+  if (spec.shape.sharpTagsPath.empty() && spec.shape.sharpTagsInline.is_null()) return {};
+  TriangleMesh mesh;
+  SharpTags tags;
+  try {
+    mesh = makeShapeMesh(spec.shape);
+    if (!spec.shape.sharpTagsPath.empty()) tags = loadSharpTags(spec.shape.sharpTagsPath, mesh);
+  } catch (const InputError& e) {
+    throw InputError(sceneFile, shapePointer, e.what());
+  }
+  if (!spec.shape.sharpTagsInline.is_null()) {
+    tags = readSharpTags(spec.shape.sharpTagsInline, sceneFile, shapePointer + "/mesh/sharp_tags", mesh);
+  }
+  return tags;
+}
+
+SharpTags sharpTagsOf(const Obstacle& obstacle) {
+  SharpTags tags;
+  for (std::size_t v = 0; v < obstacle.sharpVertex.size(); ++v) {
+    if (obstacle.sharpVertex[v]) tags.vertices.push_back(static_cast<int>(v));
+  }
+  for (std::size_t e = 0; e < obstacle.sharpEdge.size(); ++e) {
+    if (obstacle.sharpEdge[e]) tags.edges.push_back(obstacle.topology.edges[e]);
+  }
+  std::sort(tags.edges.begin(), tags.edges.end());
+  return tags;
+}
+
 Obstacle buildObstacle(const ObstacleSpec& spec, const std::string& sceneFile, int index) {
   Obstacle obstacle;
   obstacle.name = spec.name;

@@ -41,6 +41,12 @@ void markSharpFeatures(const SharpTags& tags, Obstacle& obstacle);
 // InputError naming the scene file and the obstacle's JSON field for a bad mesh or tag file.
 Obstacle buildObstacle(const ObstacleSpec& spec, const std::string& sceneFile, int index);
 
+// The sharp tags buildObstacle gives `spec`: its inline "sharp_tags", else its tags file, else
+// none; read as strictly (throws InputError as buildObstacle does).
+SharpTags sharpTagsOfSpec(const ObstacleSpec& spec, const std::string& sceneFile, int index);
+// The tags `obstacle` has now (what markSharpFeatures marked), in canonical form.
+SharpTags sharpTagsOf(const Obstacle& obstacle);
+
 // Starts a step from time t of length h: the start pose is the current one; the candidate end pose
 // is the script's (kinematic), the current one (static), or where the current velocity takes it
 // after gravity (dynamic). Fills x0 and x1.

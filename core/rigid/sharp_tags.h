@@ -23,6 +23,7 @@ struct SharpTags {
   std::vector<std::array<int, 2>> edges;
 
   bool empty() const { return vertices.empty() && edges.empty(); }
+  bool operator==(const SharpTags&) const = default;
 };
 
 // "dir/sword.obj" -> "dir/sword.sharp.json".

@@ -91,6 +91,10 @@ class World {
   // sharp features from the next step on. Throws std::out_of_range for a bad obstacle or id.
   void setObstacleSharpTags(int obstacle, const SharpTags& tags);  // frames, fps, camera: no simulation effect
   void setSceneLabels(const std::string& name, const std::string& description);
+  // Where an obstacle's sharp tags come from, as scene() records it (its shape's "sharp_tags"
+  // file or inline tags): the tags themselves are not touched (applyLiveEdits calls it only when
+  // that source holds the tags the obstacle already has). Throws std::out_of_range for a bad index.
+  void setObstacleSharpTagsSource(int obstacle, const std::filesystem::path& file, const nlohmann::json& inlineTags);
 
   // Grab: a zero-rest-length spring (forces/grab_spring.h) from `vertex` of `cloth` to `target`,
   // part of the implicit solve; the "grab" stage runs while it is held. One grab at a time: a new

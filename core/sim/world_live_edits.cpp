@@ -91,6 +91,14 @@ void World::setObstacleSharpTags(int index, const SharpTags& tags) {
   markSharpFeatures(tags, obstacle);
 }
 
+void World::setObstacleSharpTagsSource(int index, const std::filesystem::path& file, const nlohmann::json& inlineTags) {
+  std::vector<ObstacleSpec>& specs = impl_->scene.obstacles;
+  if (index < 0 || index >= static_cast<int>(specs.size())) throw std::out_of_range("no obstacle " + std::to_string(index));
+  ShapeSpec& shape = specs[static_cast<std::size_t>(index)].shape;
+  shape.sharpTagsPath = file;
+  shape.sharpTagsInline = inlineTags;
+}
+
 void World::setSceneLabels(const std::string& name, const std::string& description) {
   impl_->scene.name = name;
   impl_->scene.description = description;

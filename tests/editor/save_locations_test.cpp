@@ -3,6 +3,7 @@
 // shipped tool go beside the scene unless the user explicitly changes the shipped file.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -16,6 +17,7 @@
 #include "contact/obstacle.h"
 #include "editor/editor_settings.h"
 #include "editor/scene_edits.h"
+#include "editor/sharp_tag_edits.h"
 #include "support/editor_panels_fixture.h"
 
 namespace weft::editor {
@@ -48,10 +50,17 @@ class SaveLocationsTest : public EditorPanelsTest {
   // A copy of sword-into-sheet (8 x 8 cloth) beside the test's folder, its sword's first vertex's
   // tag toggled in the Tools panel and Save pressed: the dialog that asks where the tags of a
   // shipped tool go is open. Returns the vertex's tag before the toggle.
-  bool toggleATagOfTheShippedSwordAndSave() {
+  // With `secondSword`, the scene has a second obstacle of that name on the same shipped mesh, so
+  // reading the same shipped tags file.
+  bool toggleATagOfTheShippedSwordAndSave(const std::string& secondSword = "") {
     std::ifstream in(fs::path(WEFT_SOURCE_DIR) / "presets" / "scenes" / "sword-into-sheet.json");
     json scene = json::parse(in);
     scene["cloths"][0]["mesh"]["grid"]["resolution"] = json::array({8, 8});
+    if (!secondSword.empty()) {
+      json second = scene["obstacles"][0];
+      second["name"] = secondSword;
+      scene["obstacles"].push_back(second);
+    }
     session_ = std::make_unique<EditorSession>(dir_.write("copied/sword-copy.json", scene.dump(2)));
     ui_.panels.tools.select(*session_, 0);
     const bool wasSharp = session_->world().obstacle(0).sharpVertex[kToggledVertex];
@@ -218,6 +227,81 @@ TEST_F(SaveLocationsTest, AShippedToolsTagsAreSavedBesideTheSceneUnlessTheUserSa
   EXPECT_EQ(session_->json()["obstacles"][0]["shape"]["mesh"]["sharp_tags"], "sword.sharp.json");
   session_->reset();  // the rebuilt world reads the tags from the scene's own file
   EXPECT_NE(session_->world().obstacle(0).sharpVertex[vertex], wasSharp);
+}
+
+// The dialog says what each choice writes, naming the file. "Change the shipped file" follows the
+// per-obstacle rule: with another obstacle of the scene on the same shipped tags file, it writes
+// this obstacle's own file beside the scene instead, and the dialog says that, not that the
+// shipped file changes.
+TEST_F(SaveLocationsTest, TheShippedToolDialogNamesTheFileEachChoiceWrites) {
+  const std::string shippedBefore = readText(shippedSwordTags_);
+  toggleATagOfTheShippedSwordAndSave("sword-2");
+  ASSERT_TRUE(probe_.rects.count("tools/saveshipped")) << "the dialog is open";
+  const std::string changeShipped = probe_.texts["tools/saveshippedtext"];
+  const fs::path own = dir_.path() / "copied" / "sword-copy.sword.sharp.json";
+  EXPECT_NE(changeShipped.find("sword-2"), std::string::npos) << "names the other reader: " << changeShipped;
+  EXPECT_NE(changeShipped.find(own.string()), std::string::npos) << "names the file written: " << changeShipped;
+  EXPECT_NE(changeShipped.find("instead"), std::string::npos) << changeShipped;
+  // sword.sharp.json beside the scene is free (sword-2 reads the shipped one): Save beside names it.
+  const std::string beside = probe_.texts["tools/besidescenetext"];
+  EXPECT_NE(beside.find((dir_.path() / "copied" / "sword.sharp.json").string()), std::string::npos) << beside;
+
+  imgui_->click(probe_.centre("tools/saveshipped"), drawUi());
+  EXPECT_TRUE(fs::is_regular_file(own)) << "what the dialog said was written: " << session_->status;
+  EXPECT_EQ(readText(shippedSwordTags_), shippedBefore) << "the shipped file is left as it is";
+}
+
+// With no other obstacle on the shipped file, "Change the shipped file" says it writes that file.
+TEST_F(SaveLocationsTest, TheShippedToolDialogSaysChangingTheShippedFileWritesIt) {
+  toggleATagOfTheShippedSwordAndSave();
+  ASSERT_TRUE(probe_.rects.count("tools/saveshipped"));
+  const std::string changeShipped = probe_.texts["tools/saveshippedtext"];
+  EXPECT_NE(changeShipped.find(shippedSwordTags_.string()), std::string::npos) << changeShipped;
+  EXPECT_EQ(changeShipped.find("instead"), std::string::npos) << changeShipped;
+}
+
+// Saving beside the scene points the obstacle's "sharp_tags" at the new file, which holds exactly
+// the tags the world's sword has: the switch changes nothing in the world, so tagging goes on
+// without a reset, and the next save writes the new file.
+TEST_F(SaveLocationsTest, TaggingGoesOnWithoutAResetAfterTheTagsAreSavedBesideTheScene) {
+  const bool wasSharp = toggleATagOfTheShippedSwordAndSave();
+  imgui_->click(probe_.centre("tools/savebesidescene"), drawUi());
+  const fs::path besideScene = dir_.path() / "copied" / "sword.sharp.json";
+  ASSERT_TRUE(fs::is_regular_file(besideScene)) << session_->status;
+  EXPECT_FALSE(session_->resetPending()) << session_->status;
+  probe_.rects.erase("tools/tagmode");
+  imgui_->frame(drawUi());
+  EXPECT_TRUE(probe_.rects.count("tools/tagmode")) << "the Tools panel does not ask for a reset";
+  EXPECT_EQ(session_->world().scene().obstacles[0].shape.sharpTagsPath.filename(), "sword.sharp.json")
+      << "the running world records where its tags come from now";
+  EXPECT_NE(session_->world().obstacle(0).sharpVertex[kToggledVertex], wasSharp) << "the tags did not change";
+
+  ToolTagEditor& tool = *ui_.panels.tools.current();
+  tool.toggleVertex(*session_, 1);
+  const bool vertex1 = session_->world().obstacle(0).sharpVertex[1];
+  const SharpTags tagged = tool.tags();  // a copy: begin and end of one vector
+  EXPECT_EQ(vertex1, std::binary_search(tagged.vertices.begin(), tagged.vertices.end(), 1))
+      << "the next tag reaches the world";
+  imgui_->click(probe_.centre("tools/save"), drawUi());
+  EXPECT_EQ(sharpTagsFromJson(json::parse(readText(besideScene))).vertices, tool.tags().vertices)
+      << "saved into the scene's own file now, no dialog: " << session_->status;
+  // A later live edit still applies live (the world's scene and the editor's agree).
+  session_->edit(withGravity(session_->json(), Vec3(0.0, -5.0, 0.0)), "gravity");
+  EXPECT_FALSE(session_->resetPending()) << session_->status;
+}
+
+// A "sharp_tags" file whose tags are not the world's still needs a reset: the switch would change
+// what the tool cuts with.
+TEST_F(SaveLocationsTest, PointingAToolAtOtherTagsStillNeedsAReset) {
+  std::ifstream in(fs::path(WEFT_SOURCE_DIR) / "presets" / "scenes" / "sword-into-sheet.json");
+  json scene = json::parse(in);
+  scene["cloths"][0]["mesh"]["grid"]["resolution"] = json::array({8, 8});
+  session_ = std::make_unique<EditorSession>(dir_.write("copied/sword-copy.json", scene.dump(2)));
+  SharpTags other;
+  other.vertices = {2};
+  std::ofstream(dir_.path() / "copied" / "other.sharp.json") << sharpTagsJson(other).dump(2);
+  session_->edit(withSharpTagsFile(session_->json(), 0, "other.sharp.json"), "other tags");
+  EXPECT_TRUE(session_->resetPending()) << session_->status;
 }
 
 // The user prefers the tags in the scene itself: no file is written, neither beside the scene nor

@@ -74,7 +74,10 @@ void EditorSession::redo() {
 // Every state in the history parsed when it was committed, so parsing it again cannot fail.
 void EditorSession::applyDocument(const std::string& label) {
   Scene edited = parse(document_.json(), document_.file());
-  if (needsReset(liveScene_, edited)) {
+  // A tool's tags saved into the file the scene now names (sharp_tag_edits.h) change only where
+  // the tags come from: live when the world's tool already has them (the tags files are read then,
+  // so only for an edit the scene alone would reset for).
+  if (needsReset(liveScene_, edited) && needsReset(liveScene_, edited, world())) {
     resetPending_ = true;
     status = label + ": applies after a reset";
   } else {

@@ -168,6 +168,7 @@ void drawEditorUi(EditorSession& session, EditorUi& ui) {
   const int cloths = static_cast<int>(session.scene().cloths.size());
   if (ui.panels.cloth >= cloths) ui.panels.cloth = cloths - 1;
   if (ui.panels.obstacle >= static_cast<int>(session.scene().obstacles.size())) ui.panels.obstacle = -1;
+  ui.panels.tools.follow(session);  // the tools' tag editors stay with their obstacles
   // Columns as editor_viewport.h lays them out, so the scene shows between them.
   drawMenuBar(session, ui);
   const float m = kPanelMargin;

@@ -92,6 +92,7 @@ void undoLatest(EditorSession& session, ToolTagEditors& tools) {
     tool->undo(session);
   } else {
     session.undo();
+    tools.follow(session);  // an obstacle removed or added: the tag editors follow theirs
   }
 }
 
@@ -101,6 +102,7 @@ void redoLatest(EditorSession& session, ToolTagEditors& tools) {
     tool->redo(session);
   } else {
     session.redo();
+    tools.follow(session);
   }
 }
 

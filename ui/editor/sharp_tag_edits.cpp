@@ -219,18 +219,36 @@ std::optional<std::string> ToolTagEditor::tagsFileSharedWith(const EditorSession
   return otherReaderOf(session.scene(), obstacle_, document_.file());
 }
 
+std::filesystem::path ToolTagEditor::toolFileTarget(const EditorSession& session) const {
+  if (tagsFileSharedWith(session)) return session.document().file().parent_path() / ownFileName(session);
+  return document_.file();
+}
+
 std::filesystem::path ToolTagEditor::saveToToolFile(EditorSession& session) {
   if (tagsFileSharedWith(session)) return saveBesideSceneAs(session, ownFileName(session));
   document_.save();
   return document_.file();
 }
 
-std::filesystem::path ToolTagEditor::saveBesideScene(EditorSession& session) {
-  const ObstacleSpec& spec = session.scene().obstacles.at(static_cast<std::size_t>(obstacle_));
+namespace {
+
+// MESH.sharp.json beside the scene, unless another obstacle of the scene reads that file: then
+// the obstacle's own (`own`).
+std::filesystem::path besideSceneName(const EditorSession& session, int obstacle, const std::filesystem::path& own) {
+  const ObstacleSpec& spec = session.scene().obstacles.at(static_cast<std::size_t>(obstacle));
   const std::filesystem::path folder = session.document().file().parent_path();
-  // MESH.sharp.json, unless another obstacle of the scene reads that file.
   const std::filesystem::path name = spec.shape.meshPath.stem().string() + ".sharp.json";
-  return saveBesideSceneAs(session, otherReaderOf(session.scene(), obstacle_, folder / name) ? ownFileName(session) : name);
+  return otherReaderOf(session.scene(), obstacle, folder / name) ? own : name;
+}
+
+}  // namespace
+
+std::filesystem::path ToolTagEditor::besideSceneTarget(const EditorSession& session) const {
+  return session.document().file().parent_path() / besideSceneName(session, obstacle_, ownFileName(session));
+}
+
+std::filesystem::path ToolTagEditor::saveBesideScene(EditorSession& session) {
+  return saveBesideSceneAs(session, besideSceneName(session, obstacle_, ownFileName(session)));
 }
 
 std::filesystem::path ToolTagEditor::ownFileName(const EditorSession& session) const {
@@ -285,7 +303,14 @@ bool ToolTagEditor::savesIntoInstalledData() const { return !inScene_ && isInsta
 void ToolTagEditor::applyToWorld(EditorSession& session) const {
   SharpTags held = tags();
   const std::size_t bytes = held.vertices.capacity() * sizeof(int) + held.edges.capacity() * sizeof(held.edges.front());
-  session.applyToWorld(WorldChange{[obstacle = obstacle_, tags = std::move(held)](World& world) { world.setObstacleSharpTags(obstacle, tags); },
+  // The world's obstacle at this index is the tool's unless a reset is pending after an obstacle
+  // before it was removed or added: then nothing is applied, and the reset puts the tags in
+  // (ToolTagEditors::reapplyAfterReset).
+  session.applyToWorld(WorldChange{[obstacle = obstacle_, name = name_, tags = std::move(held)](World& world) {
+                                     if (obstacle < world.obstacleCount() && world.obstacle(obstacle).name == name) {
+                                       world.setObstacleSharpTags(obstacle, tags);
+                                     }
+                                   },
                                    "tool " + std::to_string(obstacle_) + " sharp tags", bytes});  // the whole set
 }
 

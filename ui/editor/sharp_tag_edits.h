@@ -69,6 +69,11 @@ class ToolTagEditor {
   std::filesystem::path saveToToolFile(EditorSession& session);
   // The name of another obstacle of the scene that reads this tool's tags file (none: no other).
   std::optional<std::string> tagsFileSharedWith(const EditorSession& session) const;
+  // The file saveToToolFile would write now: the tool's tags file, or this obstacle's own beside
+  // the scene when another obstacle reads that one.
+  std::filesystem::path toolFileTarget(const EditorSession& session) const;
+  // The file saveBesideScene would write now.
+  std::filesystem::path besideSceneTarget(const EditorSession& session) const;
   // Saves the tags beside the scene instead (SCENE_FOLDER/MESH.sharp.json, or
   // SCENE.OBSTACLE.sharp.json when another obstacle of the scene reads that one) and points the
   // scene's obstacle at that file ("sharp_tags"), so a shipped tool's file is left alone and other
@@ -98,6 +103,7 @@ class ToolTagEditor {
   std::filesystem::path saveBesideSceneAs(EditorSession& session, const std::filesystem::path& name);
   void applyToWorld(EditorSession& session) const;
 
+  friend class ToolTagEditors;  // follows the obstacle when others before it come and go
   int obstacle_;
   std::string name_;  // the obstacle's name, to notice it gone after a reset
   JsonDocument document_;

@@ -6,7 +6,17 @@
 // what the Tools panel and the viewport's tag clicks work on. The shared Undo (shared_undo.h)
 // reaches every one's steps, the autosave keeps every one's unsaved tags (autosave.h), and the
 // unsaved-changes prompts (quit, open another scene) ask about all of them.
+//
+// An editor belongs to its obstacle, not to an index: when obstacles before it are removed or
+// added (the Scene panel, or an undo or redo of that), follow() moves it to the obstacle's new
+// index, so its tags, undo steps, autosave and saves still go to that obstacle. A removed
+// obstacle's editor goes with it: set aside, out of the Undo, the autosave and the prompts (the
+// scene's removal is the unsaved edit then; saving the scene without the tool drops its tags with
+// it). Undoing the removal brings the obstacle back, and its editor with its unsaved tags and undo
+// steps.
+#include <filesystem>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -25,8 +35,13 @@ class ToolTagEditors {
   // Throws as ToolTagEditor's constructor does (a generated shape); then nothing changes.
   ToolTagEditor& select(const EditorSession& session, int obstacle);
   void deselect();  // no tool is current; every editor is kept
-  // The obstacle was removed from the scene: its editor goes with it.
-  void forget(int obstacle);
+  // The scene's obstacles may have changed since the last call (a removal, an addition, an undo or
+  // redo of one): each kept editor follows its obstacle to its index now, matched by name in
+  // order (the old and new lists of names aligned, so only those after a removed or added obstacle
+  // move). An editor whose obstacle is gone is set aside; one set aside comes back when an obstacle
+  // of its name and mesh is back (the removal undone). Cheap when nothing changed: the editor calls
+  // it every frame, and after every scene edit, undo and redo that can move obstacles.
+  void follow(const EditorSession& session);
   void clear();  // another scene was opened: the prompt settled every unsaved tag first
 
   // After a reset (the world rebuilt, its obstacles holding the files' tags again): every kept
@@ -35,7 +50,8 @@ class ToolTagEditors {
   // unsaved tags.
   std::vector<std::string> reapplyAfterReset(EditorSession& session);
 
-  // Every kept editor, by obstacle index: what the shared Undo looks through.
+  // Every kept editor of an obstacle in the scene, by obstacle index (not those set aside): what
+  // the shared Undo looks through.
   std::vector<ToolTagEditor*> editors();
   std::vector<const ToolTagEditor*> editors() const;
 
@@ -58,12 +74,15 @@ class ToolTagEditors {
 
  private:
   struct Kept {
-    Kept(const EditorSession& session, int obstacle) : editor(session, obstacle), worldGeneration(session.worldGeneration()) {}
+    Kept(const EditorSession& session, int obstacle);
     ToolTagEditor editor;
-    int worldGeneration;  // the world its tags were last applied to (EditorSession::worldGeneration)
+    int worldGeneration;                // the world its tags were last applied to (EditorSession::worldGeneration)
+    std::filesystem::path meshPath;     // the obstacle's mesh, to know it again when it comes back
   };
-  std::map<int, Kept> kept_;  // by obstacle index
-  int current_ = -1;          // the current tool's obstacle index (-1: none)
+  std::map<int, std::unique_ptr<Kept>> kept_;  // by obstacle index
+  std::vector<std::unique_ptr<Kept>> aside_;   // of obstacles removed from the scene, latest last
+  std::vector<std::string> names_;             // the scene's obstacles' names when last followed
+  int current_ = -1;                           // the current tool's obstacle index (-1: none)
 };
 
 }  // namespace weft::editor

@@ -19,6 +19,12 @@ void recordWidget(PanelState& state, const std::string& id) {
   state.probe->rects[id] = ImVec4(lo.x, lo.y, hi.x, hi.y);
 }
 
+void wrappedText(PanelState& state, const std::string& id, const std::string& text) {
+  ImGui::TextWrapped("%s", text.c_str());
+  recordWidget(state, id);
+  if (state.probe != nullptr) state.probe->texts[id] = text;
+}
+
 void saveScene(EditorSession& session, PanelState& state) {
   if (session.savesIntoInstalledData()) {
     const std::filesystem::path copy = suggestedSceneCopy(session.document().file());

@@ -23,6 +23,7 @@ class SceneBrowser;
 // (ImGui 1.86 has no test engine). Panels record into it only when the state carries one.
 struct WidgetProbe {
   std::map<std::string, ImVec4> rects;  // id -> (min x, min y, max x, max y) in pixels
+  std::map<std::string, std::string> texts;  // id -> the text drawn (what a dialog says)
   ImVec2 centre(const std::string& id) const {
     const ImVec4& r = rects.at(id);
     return ImVec2(0.5f * (r.x + r.z), 0.5f * (r.y + r.w));
@@ -60,6 +61,8 @@ void saveScene(EditorSession& session, PanelState& state);
 
 // Records the last drawn item under `id` when a probe is attached.
 void recordWidget(PanelState& state, const std::string& id);
+// Draws `text` wrapped and records it under `id` when a probe is attached.
+void wrappedText(PanelState& state, const std::string& id, const std::string& text);
 
 // A number the user types: selected whole on click, taken when Enter is pressed, and only when
 // finite. True when a new value is in `value` (each panel still checks its own range).

@@ -79,6 +79,7 @@ void drawObjects(EditorSession& session, PanelState& state) {
   if (state.obstacle >= static_cast<int>(scene.obstacles.size())) state.obstacle = -1;
   for (int i = 0; i < static_cast<int>(scene.obstacles.size()); ++i) {
     if (ImGui::Selectable(scene.obstacles[static_cast<std::size_t>(i)].name.c_str(), state.obstacle == i)) state.obstacle = i;
+    recordWidget(state, "scene/obstacle" + std::to_string(i));
   }
   // New obstacles appear beside the first cloth's first vertex, where they can be seen.
   const std::shared_ptr<const WorldSnapshot> shown = session.view();
@@ -96,9 +97,12 @@ void drawObjects(EditorSession& session, PanelState& state) {
   if (ImGui::SmallButton("Remove")) {
     const int removed = state.obstacle;
     state.obstacle = -1;
-    state.tools.forget(removed);
     tryEdit(session, [&] { return withoutObstacle(session.json(), removed); }, "remove obstacle");
+    // The tools' tag editors follow their obstacles: the removed one's is set aside (back with an
+    // undo), those after it move up one (tool_tag_editors.h).
+    state.tools.follow(session);
   }
+  recordWidget(state, "scene/remove");
   ImGui::EndDisabled();
 }
 

@@ -51,6 +51,26 @@ void drawTagsDialog(EditorSession& session, PanelState& state) {
   if (sceneShipped) {
     ImGui::TextWrapped("This scene ships with Weft too: keep the tags in it, then save your version of the scene with "
                        "Save as.");
+  } else {
+    wrappedText(state, "tools/besidescenetext",
+                "Save beside this scene: writes " + tool.besideSceneTarget(session).string() +
+                    "; the scene reads the tags from there (save the scene to keep that).");
+  }
+  wrappedText(state, "tools/inscenetext", "Keep them in this scene: the tags go into the scene file, saved with it.");
+  // Tags are per obstacle (sharp_tag_edits.h): with another obstacle on the same file, "Change the
+  // shipped file" writes this one's own file beside the scene, and the dialog says so.
+  const std::optional<std::string> other = tool.tagsFileSharedWith(session);
+  if (other && sceneShipped) {
+    wrappedText(state, "tools/saveshippedtext",
+                "Change the shipped file: " + other.value() + " in this scene reads that file too, so the tags would "
+                "go beside this scene, which ships with Weft: keep them in the scene instead.");
+  } else if (other) {
+    wrappedText(state, "tools/saveshippedtext",
+                "Change the shipped file: " + other.value() + " in this scene reads that file too, so this writes " +
+                    tool.toolFileTarget(session).string() + " beside the scene instead; the shipped file stays as it is.");
+  } else {
+    wrappedText(state, "tools/saveshippedtext",
+                "Change the shipped file: writes " + shipped.string() + ", for every scene with this tool.");
   }
   ImGui::BeginDisabled(sceneShipped);
   if (ImGui::Button("Save beside this scene")) {
@@ -66,10 +86,12 @@ void drawTagsDialog(EditorSession& session, PanelState& state) {
   }
   recordWidget(state, "tools/saveinscene");
   ImGui::SameLine();
+  ImGui::BeginDisabled(other && sceneShipped);
   if (ImGui::Button("Change the shipped file")) {
     saveTags(session, tool, TagsGoTo::ToolFile);
     state.tagsDialog = false;
   }
+  ImGui::EndDisabled();
   recordWidget(state, "tools/saveshipped");
   ImGui::SameLine();
   if (ImGui::Button("Cancel") || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false)) state.tagsDialog = false;
