@@ -47,7 +47,7 @@ ui::OrbitCamera startCamera(const editor::EditorSession& session, const editor::
 
 // What a shortcut asks of the app beyond the session.
 struct ShortcutResult {
-  bool quit = false;         // Esc with nothing open
+  bool quit = false;         // Esc with nothing open (no popup, no browser)
   bool frameScene = false;   // F
 };
 
@@ -58,6 +58,12 @@ ShortcutResult applyShortcuts(editor::EditorSession& session, editor::PanelState
   const ImGuiIO& io = ImGui::GetIO();
   if (ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId | ImGuiPopupFlags_AnyPopupLevel)) {
     if (input.pressed(ui::Key::kEscape)) ImGui::ClosePopupsExceptModals();
+    return result;
+  }
+  // The scene and preset browser is a window, not a popup: Esc closes it too before it means quit
+  // (an artist closes what is open first, as with any other window of the editor).
+  if (panels.browserOpen && input.pressed(ui::Key::kEscape)) {
+    panels.browserOpen = false;
     return result;
   }
   if (io.WantCaptureKeyboard) return result;
@@ -216,6 +222,7 @@ int runEditor(const EditorOptions& options) {
   const Clock::time_point started = Clock::now();
   std::string printedState;   // --print-changes: what was last said to be on screen
   std::string printedStatus;
+  bool printedBrowserOpen = false;
   while (ui.quit != editor::QuitPrompt::Confirmed) {
     editor::EditorSession* session = &workspace.session();
     window.pollEvents();
@@ -277,8 +284,12 @@ int runEditor(const EditorOptions& options) {
       const std::string state = shownState(*session);
       if (state != printedState) std::printf("weft edit: shows %s\n", state.c_str());
       if (session->status != printedStatus) std::printf("weft edit: status: %s\n", session->status.c_str());
+      if (ui.panels.browserOpen != printedBrowserOpen) {
+        std::printf("weft edit: browser %s\n", ui.panels.browserOpen ? "open" : "closed");
+      }
       printedState = state;
       printedStatus = session->status;
+      printedBrowserOpen = ui.panels.browserOpen;
       std::fflush(stdout);
     }
     if (Clock::now() - lastAutosave > kAutosaveEvery) {

@@ -21,6 +21,8 @@
 
 #include "editor/autosave.h"
 #include "editor/editor_viewport.h"
+#include "editor/scene_browser.h"
+#include "editor/thumbnail_cache.h"
 #include "support/editor_panels_fixture.h"
 
 namespace {
@@ -143,6 +145,16 @@ class WidgetLocator : public weft::test::EditorPanelsTest {
     imgui_->click(probe_.centre("tools/tool0"), drawUi());
     imgui_->frame(drawUi());
     return ui_.panels.tools.current() != nullptr && probe_.rects.count("tools/sharperthan") > 0;
+  }
+  // The Scene panel's Browse button, drawn only where a browser exists (the window has one).
+  ImVec2 browseButton(const fs::path& thumbnails) {
+    weft::editor::SceneBrowser browser({fs::path(WEFT_SOURCE_DIR) / "presets" / "scenes"},
+                                       weft::editor::ThumbnailCache(thumbnails));
+    ui_.panels.browser = &browser;
+    imgui_->frame(drawUi());
+    imgui_->frame(drawUi());
+    ui_.panels.browser = nullptr;
+    return probe_.rects.count("scene/browse") ? probe_.centre("scene/browse") : ImVec2(-1, -1);
   }
   void finish() {
     TearDown();
@@ -396,6 +408,29 @@ TEST_F(EditorWindow, KeyTapsShorterThanAFrameAreNotLost) {
   }
   EXPECT_EQ(saved, 20.0) << readText(root_ / "taps.txt") << "(the window and the file as they were: "
                          << (fs::temp_directory_path() / "weft_window_test_failures").string() << ")";
+}
+
+// Esc closes what is open before it quits: the scene and preset browser is a window of its own,
+// not a popup, and Esc used to quit the editor with it open.
+TEST_F(EditorWindow, EscClosesTheBrowserBeforeItQuits) {
+  const fs::path scene = smallScene("ball-into-sheet-table4.1-cloth2", "browse.json");
+  WidgetLocator locator;
+  if (!locator.start()) GTEST_SKIP() << "headless EGL is needed to locate the widgets";
+  const ImVec2 browse = locator.browseButton(root_ / "thumbnails");
+  ASSERT_GE(browse.x, 0.0f) << "the Browse button was not laid out";
+  locator.finish();
+  const fs::path log = root_ / "browse.txt";
+  startWeft("edit '" + scene.string() + "' --print-changes", log);
+  ASSERT_TRUE(waitForWindow(60)) << readText(log);
+  ASSERT_TRUE(waitForFirstFrame(log, scene, 120)) << readText(log);
+  pressAt(browse);
+  ASSERT_TRUE(waitForOutput(log, "weft edit: browser open\n", 120)) << readText(log);
+  const std::size_t opened = outputSize(log);
+  display_->xdotool("key Escape");
+  ASSERT_TRUE(waitForOutput(log, "weft edit: browser closed\n", 120, opened)) << readText(log);
+  EXPECT_FALSE(waitForExit(2)) << "Esc quit with the browser open\n" << readText(log);
+  display_->xdotool("key Escape");  // nothing open, nothing unsaved: now it quits
+  EXPECT_TRUE(waitForExit(120)) << readText(log);
 }
 
 // A scene whose step takes far longer than a frame, playing: the window still draws at its own
