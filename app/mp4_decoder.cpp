@@ -3,16 +3,9 @@
 #include <stdexcept>
 #include <string>
 
+#include "shell_quoted.h"
+
 namespace weft::app {
-namespace {
-
-std::string shellQuoted(const std::string& s) {
-  std::string out = "'";
-  for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return out + "'";
-}
-
-}  // namespace
 
 Mp4Decoder::Mp4Decoder(const std::filesystem::path& file, int width, int height) : width_(width), height_(height) {
   const std::string command = "ffmpeg -hide_banner -nostdin -loglevel error -i " + shellQuoted(file.string()) +

@@ -7,17 +7,9 @@
 #include <sys/wait.h>
 
 #include "frame_png_writer.h"
+#include "shell_quoted.h"
 
 namespace weft::app {
-namespace {
-
-std::string shellQuoted(const std::string& s) {
-  std::string out = "'";
-  for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return out + "'";
-}
-
-}  // namespace
 
 bool ffmpegInstalled() { return onPath("ffmpeg"); }
 

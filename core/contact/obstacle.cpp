@@ -82,10 +82,12 @@ void markSharpFeatures(const SharpTags& tags, Obstacle& obstacle) {
   }
 }
 
-SharpTags sharpTagsOfSpec(const ObstacleSpec& spec, const std::string& sceneFile, int index) {
+namespace {
+
+// The obstacle's mesh into `mesh`, and its sharp tags: from its tags file, or written in the scene
+// (those errors name the scene file and the field themselves).
+SharpTags shapeAndSharpTags(const ObstacleSpec& spec, const std::string& sceneFile, int index, TriangleMesh& mesh) {
   const std::string shapePointer = obstaclePointer(index) + "/shape";
-  if (spec.shape.sharpTagsPath.empty() && spec.shape.sharpTagsInline.is_null()) return {};
-  TriangleMesh mesh;
   SharpTags tags;
   try {
     mesh = makeShapeMesh(spec.shape);
@@ -97,6 +99,14 @@ SharpTags sharpTagsOfSpec(const ObstacleSpec& spec, const std::string& sceneFile
     tags = readSharpTags(spec.shape.sharpTagsInline, sceneFile, shapePointer + "/mesh/sharp_tags", mesh);
   }
   return tags;
+}
+
+}  // namespace
+
+SharpTags sharpTagsOfSpec(const ObstacleSpec& spec, const std::string& sceneFile, int index) {
+  if (spec.shape.sharpTagsPath.empty() && spec.shape.sharpTagsInline.is_null()) return {};
+  TriangleMesh mesh;
+  return shapeAndSharpTags(spec, sceneFile, index, mesh);
 }
 
 SharpTags sharpTagsOf(const Obstacle& obstacle) {
@@ -116,19 +126,8 @@ Obstacle buildObstacle(const ObstacleSpec& spec, const std::string& sceneFile, i
   obstacle.name = spec.name;
   obstacle.motion = spec.motion;
   obstacle.friction = spec.friction;
-  const std::string shapePointer = obstaclePointer(index) + "/shape";
   TriangleMesh mesh;
-  SharpTags tags;
-  try {
-    mesh = makeShapeMesh(spec.shape);
-    if (!spec.shape.sharpTagsPath.empty()) tags = loadSharpTags(spec.shape.sharpTagsPath, mesh);
-  } catch (const InputError& e) {
-    throw InputError(sceneFile, shapePointer, e.what());
-  }
-  // Tags written in the scene: their errors name the scene file and the field themselves.
-  if (!spec.shape.sharpTagsInline.is_null()) {
-    tags = readSharpTags(spec.shape.sharpTagsInline, sceneFile, shapePointer + "/mesh/sharp_tags", mesh);
-  }
+  const SharpTags tags = shapeAndSharpTags(spec, sceneFile, index, mesh);
 
   RigidState state;
   state.position = spec.translate;
@@ -144,7 +143,7 @@ Obstacle buildObstacle(const ObstacleSpec& spec, const std::string& sceneFile, i
       const double volume = computeMassProperties(mesh, 1.0, spec.name).volume;
       obstacle.body = makeDynamicBody(computeMassProperties(mesh, spec.mass / volume, spec.name), state);
     } catch (const InputError& e) {
-      throw InputError(sceneFile, shapePointer, e.what());
+      throw InputError(sceneFile, obstaclePointer(index) + "/shape", e.what());
     }
   } else {
     if (spec.motion == ObstacleMotion::Static) state.linearVelocity = state.angularVelocity = Vec3::Zero();
