@@ -16,6 +16,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "support/shell_run.h"
 #include "support/snapshot.h"
 
 namespace {
@@ -29,10 +30,7 @@ const fs::path kHangingSheet = kPresetScenes / "hanging-sheet.json";
 // A tiny version of the hanging sheet: 8 x 8 vertices, 5 frames.
 const std::string kTiny = "--set 'cloths.0.mesh.grid.resolution=[8,8]' --frames 5";
 
-struct Result {
-  int exitCode = -1;
-  std::string output;  // stdout and stderr together
-};
+using Result = weft::test::ShellResult;
 
 // Each test gets its own working folder (`work/`), so that default output paths such as
 // out/<scene> land there and nothing depends on where the test runner was started.
@@ -55,16 +53,8 @@ class WeftCli : public ::testing::Test {
   Result weft(const std::string& arguments, const std::string& environment = "") const {
     const fs::path log = root_ / "output.txt";
     const std::string command = "cd '" + work().string() + "' && GALLIUM_DRIVER=llvmpipe WEFT_AUTOSAVE_DIR='" + (root_ / "autosave").string() + "' WEFT_CONFIG_DIR='" + (root_ / "config").string() + "' " + environment + " '" +
-                                std::string(WEFT_BINARY) + "' " + arguments +
-                                " > '" + log.string() + "' 2>&1";
-    const int status = std::system(command.c_str());
-    Result r;
-    r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    std::ifstream in(log);
-    std::stringstream text;
-    text << in.rdbuf();
-    r.output = text.str();
-    return r;
+                                std::string(WEFT_BINARY) + "' " + arguments;
+    return weft::test::runShell(command, log);
   }
 
   fs::path writeScene(const std::string& name, const json& scene) const {

@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "gallery/gallery_entries.h"
+#include "support/shell_run.h"
 #include "support/temp_dir.h"
 
 namespace weft::gallery {
@@ -21,23 +22,12 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Result {
-  int exitCode = -1;
-  std::string output;  // stdout and stderr together
-};
+using Result = weft::test::ShellResult;
 
 Result weft(const fs::path& dir, const std::string& arguments) {
-  const fs::path log = dir / "output.txt";
-  const std::string line = "cd '" + dir.string() + "' && GALLIUM_DRIVER=llvmpipe '" + std::string(WEFT_BINARY) + "' " +
-                           arguments + " > '" + log.string() + "' 2>&1";
-  const int status = std::system(line.c_str());
-  Result r;
-  r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  std::ifstream in(log);
-  std::stringstream text;
-  text << in.rdbuf();
-  r.output = text.str();
-  return r;
+  return weft::test::runShell("cd '" + dir.string() + "' && GALLIUM_DRIVER=llvmpipe '" + std::string(WEFT_BINARY) + "' " +
+                                  arguments,
+                              dir / "output.txt");
 }
 
 TEST(Gallery, QuickRunWritesEveryEntrysFilesAndItsDirectionHistogram) {

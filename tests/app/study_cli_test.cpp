@@ -18,6 +18,7 @@
 #include "study/clip_manifest.h"
 #include "study/guess_order.h"
 #include "study/study_answers.h"
+#include "support/shell_run.h"
 #include "support/temp_dir.h"
 
 namespace weft::study {
@@ -26,24 +27,12 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-struct Result {
-  int exitCode = -1;
-  std::string output;  // stdout and stderr together
-};
+using Result = weft::test::ShellResult;
 
 // Runs `command` (a shell line) in `dir`; `environment` goes before it (e.g. "PATH=/nonexistent").
 Result shell(const fs::path& dir, const std::string& command, const std::string& environment = "") {
-  const fs::path log = dir / "output.txt";
-  const std::string line = "cd '" + dir.string() + "' && GALLIUM_DRIVER=llvmpipe " + environment + " " + command +
-                           " > '" + log.string() + "' 2>&1";
-  const int status = std::system(line.c_str());
-  Result r;
-  r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  std::ifstream in(log);
-  std::stringstream text;
-  text << in.rdbuf();
-  r.output = text.str();
-  return r;
+  return weft::test::runShell("cd '" + dir.string() + "' && GALLIUM_DRIVER=llvmpipe " + environment + " " + command,
+                              dir / "output.txt");
 }
 
 Result weft(const fs::path& dir, const std::string& arguments, const std::string& environment = "") {
