@@ -66,6 +66,38 @@ void NonlocalStress::gather(const ClothMesh& mesh, int t, double reach) {
   }
 }
 
+void NonlocalStress::gatherAround(const ClothMesh& mesh, const std::vector<int>& seeds, double reach) {
+  // One walk from all the seeds at once: a tear's changed triangles lie side by side, so walking
+  // from each in turn went over the same disc once per seed (most of a tearing step's patch).
+  // A triangle joins when it is within reach of any seed and touches one that joined: every
+  // seed's own gather is inside, so the patch rebuilds at least what it did seed by seed (a
+  // neighbourhood rebuilt that did not need it comes out as it was).
+  ++currentStamp_;
+  region_.clear();
+  for (int t : seeds) {
+    if (stamp_[t] == currentStamp_) continue;
+    stamp_[t] = currentStamp_;
+    region_.push_back(t);
+  }
+  const double reach2 = reach * reach;
+  const auto withinReach = [&](int u) {
+    for (int t : seeds) {
+      if ((centroid_[u] - centroid_[t]).squaredNorm() <= reach2) return true;
+    }
+    return false;
+  };
+  for (std::size_t next = 0; next < region_.size(); ++next) {
+    const Triangle& tri = mesh.tris[region_[next]];
+    for (int e : tri.edge) {
+      const Edge& edge = mesh.edges[e];
+      const int other = edge.tri[0] == region_[next] ? edge.tri[1] : edge.tri[0];
+      if (other == kNone || stamp_[other] == currentStamp_) continue;
+      stamp_[other] = currentStamp_;
+      if (withinReach(other)) region_.push_back(other);
+    }
+  }
+}
+
 void NonlocalStress::thin(int t, std::vector<Neighbour>& list) {
   // Past the nearest kExactNeighbours (the walk goes out ring by ring), the disc is cut into
   // cells, kRings rings of equal area times kSectors sectors round t, and each cell's triangles are
@@ -244,13 +276,9 @@ std::vector<int> NonlocalStress::patch(const ClothMesh& mesh, const std::vector<
   std::vector<int> seeds = changed;
   for (std::size_t t = cachedTriangles_; t < mesh.tris.size(); ++t) seeds.push_back(static_cast<int>(t));
   updateCentroids(mesh, seeds);
-  std::vector<int> dirty;
-  for (int t : seeds) {
-    gather(mesh, t, kPatchReach * radius_);
-    dirty.insert(dirty.end(), region_.begin(), region_.end());
-  }
+  gatherAround(mesh, seeds, kPatchReach * radius_);
+  std::vector<int> dirty = region_;
   std::sort(dirty.begin(), dirty.end());
-  dirty.erase(std::unique(dirty.begin(), dirty.end()), dirty.end());
   // The changed triangles' stresses (and new ones) into the packed copy the averages read.
   packed_.resize(local.size());
   for (int t : seeds) packed_[t] = {local[t](0, 0), local[t](1, 1), local[t](0, 1)};

@@ -75,6 +75,9 @@ class NonlocalStress {
   // The triangles whose centroid lies within `reach` of triangle t's, connected to it through
   // shared edges (t first), into `region_`.
   void gather(const ClothMesh& mesh, int t, double reach);
+  // The triangles within reach of any of the seeds, connected to them through shared edges (the
+  // seeds first), into `region_`.
+  void gatherAround(const ClothMesh& mesh, const std::vector<int>& seeds, double reach);
   // Triangle t's neighbourhood at `radius_` (its gather, lips left out) into `neighbours_[t]`.
   void buildNeighbours(const ClothMesh& mesh, int t);
   // A neighbourhood of triangle t longer than the cap, read at fewer points (nonlocal_stress.cpp).
