@@ -72,10 +72,10 @@ TEST_F(KeptToolTagsTest, SwitchingToolsKeepsEachToolsUnsavedTagsAndUndo) {
   // sword's, whichever tool is picked.
   pickTool(0);
   ASSERT_TRUE(probe_.rects.count("tools/undo"));
-  imgui_->click(probe_.centre("tools/undo"), drawUi());
+  clickWidget("tools/undo", drawUi());
   EXPECT_EQ(currentTool()->name(), "hammer") << "the undo picked the tool it changed";
   EXPECT_FALSE(currentTool()->document().dirty());
-  imgui_->click(probe_.centre("tools/undo"), drawUi());
+  clickWidget("tools/undo", drawUi());
   EXPECT_EQ(worldVertexSharp(0, 0), swordWasSharp) << "the sword's own undo step came back with it";
   EXPECT_EQ(currentTool()->name(), "sword");
   EXPECT_FALSE(currentTool()->document().dirty());
@@ -184,10 +184,10 @@ TEST_F(KeptToolTagsTest, TheOpenPromptAsksAboutUnsavedTags) {
   };
   auto pickAndTag = [&] {
     probe_.rects.erase("tools/tool0");
-    imgui_->click(probe_.centre("tools/tool"), appFrame);
+    clickWidget("tools/tool", appFrame);
     imgui_->frame(appFrame);
     ASSERT_TRUE(probe_.rects.count("tools/tool0"));
-    imgui_->click(probe_.centre("tools/tool0"), appFrame);
+    clickWidget("tools/tool0", appFrame);
     ASSERT_NE(currentTool(), nullptr);
     currentTool()->toggleVertex(workspace.session(), 0);
     imgui_->frame(appFrame);

@@ -73,7 +73,7 @@ class SaveLocationsTest : public EditorPanelsTest {
       drawUi()();
     });
     imgui_->frame(drawUi());
-    imgui_->click(probe_.centre("tools/save"), drawUi());
+    clickWidget("tools/save", drawUi());
     imgui_->frame(drawUi());
     return wasSharp;
   }
@@ -219,7 +219,7 @@ TEST_F(SaveLocationsTest, AShippedToolsTagsAreSavedBesideTheSceneUnlessTheUserSa
   const bool wasSharp = toggleATagOfTheShippedSwordAndSave();
   ASSERT_TRUE(probe_.rects.count("tools/savebesidescene")) << "saving a shipped tool's tags asks where";
   EXPECT_EQ(readText(shipped), shippedBefore) << "nothing written before the user chose";
-  imgui_->click(probe_.centre("tools/savebesidescene"), drawUi());
+  clickWidget("tools/savebesidescene", drawUi());
 
   const fs::path besideScene = dir_.path() / "copied" / "sword.sharp.json";
   ASSERT_TRUE(fs::is_regular_file(besideScene)) << session_->status;
@@ -246,7 +246,7 @@ TEST_F(SaveLocationsTest, TheShippedToolDialogNamesTheFileEachChoiceWrites) {
   const std::string beside = probe_.texts["tools/besidescenetext"];
   EXPECT_NE(beside.find((dir_.path() / "copied" / "sword.sharp.json").string()), std::string::npos) << beside;
 
-  imgui_->click(probe_.centre("tools/saveshipped"), drawUi());
+  clickWidget("tools/saveshipped", drawUi());
   EXPECT_TRUE(fs::is_regular_file(own)) << "what the dialog said was written: " << session_->status;
   EXPECT_EQ(readText(shippedSwordTags_), shippedBefore) << "the shipped file is left as it is";
 }
@@ -265,7 +265,7 @@ TEST_F(SaveLocationsTest, TheShippedToolDialogSaysChangingTheShippedFileWritesIt
 // without a reset, and the next save writes the new file.
 TEST_F(SaveLocationsTest, TaggingGoesOnWithoutAResetAfterTheTagsAreSavedBesideTheScene) {
   const bool wasSharp = toggleATagOfTheShippedSwordAndSave();
-  imgui_->click(probe_.centre("tools/savebesidescene"), drawUi());
+  clickWidget("tools/savebesidescene", drawUi());
   const fs::path besideScene = dir_.path() / "copied" / "sword.sharp.json";
   ASSERT_TRUE(fs::is_regular_file(besideScene)) << session_->status;
   EXPECT_FALSE(session_->resetPending()) << session_->status;
@@ -282,7 +282,7 @@ TEST_F(SaveLocationsTest, TaggingGoesOnWithoutAResetAfterTheTagsAreSavedBesideTh
   const SharpTags tagged = tool.tags();  // a copy: begin and end of one vector
   EXPECT_EQ(vertex1, std::binary_search(tagged.vertices.begin(), tagged.vertices.end(), 1))
       << "the next tag reaches the world";
-  imgui_->click(probe_.centre("tools/save"), drawUi());
+  clickWidget("tools/save", drawUi());
   EXPECT_EQ(sharpTagsFromJson(json::parse(readText(besideScene))).vertices, tool.tags().vertices)
       << "saved into the scene's own file now, no dialog: " << session_->status;
   // A later live edit still applies live (the world's scene and the editor's agree).
@@ -313,7 +313,7 @@ TEST_F(SaveLocationsTest, AToolsTagsCanLiveInTheSceneItself) {
   const int vertex = kToggledVertex;
   const bool wasSharp = toggleATagOfTheShippedSwordAndSave();
   ASSERT_TRUE(probe_.rects.count("tools/saveinscene")) << "the dialog offers the scene itself";
-  imgui_->click(probe_.centre("tools/saveinscene"), drawUi());
+  clickWidget("tools/saveinscene", drawUi());
 
   const json& tags = session_->json()["obstacles"][0]["shape"]["mesh"]["sharp_tags"];
   ASSERT_TRUE(tags.is_object()) << session_->status;

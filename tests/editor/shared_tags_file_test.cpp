@@ -47,7 +47,7 @@ class SharedTagsFileTest : public TwoToolsPanelsTest {
   }
   void clickSaveTags() {
     ASSERT_TRUE(probe_.rects.count("tools/save"));
-    imgui_->click(probe_.centre("tools/save"), drawUi());
+    clickWidget("tools/save", drawUi());
   }
 };
 

@@ -244,10 +244,10 @@ TEST_F(SharedUndoPanels, CtrlZTwiceUndoesBothAndCtrlYOrCtrlShiftZRedoesThem) {
 TEST_F(SharedUndoPanels, TheToolsPanelsUndoIsTheSameHistory) {
   tagThenEditGravity();
   ASSERT_TRUE(probe_.rects.count("tools/undo")) << "the Tools panel shows its Undo";
-  imgui_->click(probe_.centre("tools/undo"), drawUi());
+  clickWidget("tools/undo", drawUi());
   EXPECT_DOUBLE_EQ(session_->scene().forces.gravity.y(), g0_) << "the latest edit, a parameter, is undone first";
   EXPECT_NE(edgeTagged(), startTagged_);
-  imgui_->click(probe_.centre("tools/undo"), drawUi());
+  clickWidget("tools/undo", drawUi());
   EXPECT_EQ(edgeTagged(), startTagged_);
 }
 

@@ -152,7 +152,7 @@ TEST_F(ToolTagsCrashRecoveryTest, TagsKeptInTheSceneAreOfferedAtStartAndWhenTheS
   start(twoTools_);
   frames(1);
   pickTool(1, appFrame());
-  imgui_->click(probe_.centre("tools/inscene"), appFrame());  // "In the scene"
+  clickWidget("tools/inscene", appFrame());  // "In the scene"
   ASSERT_TRUE(currentTool()->inScene()) << session().status;
   session().save();
   frames(1);

@@ -65,6 +65,14 @@ class EditorPanelsTest : public ::testing::Test {
     return [this] { drawEditorUi(*session_, ui_); };
   }
 
+  // Clicks a widget where it is now: one frame first, so that an edit made since the last frame
+  // (a longer status, an "(unsaved)" that wraps a line) has moved it in the probe too.
+  void clickWidget(const std::string& name, const std::function<void()>& draw) {
+    imgui_->frame(draw);
+    ASSERT_TRUE(probe_.rects.count(name)) << name << " is not drawn";
+    imgui_->click(probe_.centre(name), draw);
+  }
+
   static inline std::unique_ptr<ui::HeadlessGlContext> context_;
   static inline std::string skipReason_;
   test::TempDir dir_;

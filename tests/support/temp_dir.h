@@ -12,7 +12,11 @@ class TempDir {
  public:
   explicit TempDir(const std::string& prefix = "weft_test_") {
     std::random_device seed;
-    path_ = std::filesystem::temp_directory_path() / (prefix + std::to_string(seed()));
+    // Ten digits always: a path's length shows in the editor's panels (a tags file's path wraps),
+    // so names of varying length made the panels' layout differ from run to run.
+    std::string digits = std::to_string(seed());
+    digits.insert(0, 10 - digits.size(), '0');
+    path_ = std::filesystem::temp_directory_path() / (prefix + digits);
     std::filesystem::create_directories(path_);
   }
   ~TempDir() {
