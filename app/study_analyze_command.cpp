@@ -1,5 +1,5 @@
 // `weft study-analyze ANSWERS.csv [--json FILE]`: the thesis' user-study statistics (§4.5.2) for a
-// file of "guess the fabric" answers (format: study/study_answers.h and the README). Tables go to
+// file of "guess the fabric" answers (format: study/study_answers.h and docs/study.md). Tables go to
 // stdout; --json writes the same numbers unrounded.
 #include <iostream>
 #include <memory>

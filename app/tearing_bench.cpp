@@ -48,7 +48,7 @@ struct TearingBenchRow {
   double windowShare = 0.0;
 };
 
-// The mode whose crack growth does not depend on the resolution (README, Tearing point 9).
+// The mode whose crack growth does not depend on the resolution (docs/tearing.md, point 9).
 constexpr double kGrowthStressLength = 0.065;  // m
 constexpr double kGrowthIncubation = 0.06;     // s
 

@@ -27,7 +27,7 @@
 // corpus shows such inputs are rare (none of the 420 units of a first corpus took half a second of
 // wall time on the loaded machine; the slowest were shipped scenes with no override at all), so
 // the caps are not what sets the rate. The limits themselves are tested by tests/scene (the
-// refusals) and were built in full by hand (README, "Keep it fixed").
+// refusals) and were built in full by hand (docs/testing.md, "Hostile input").
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>

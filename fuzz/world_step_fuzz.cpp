@@ -21,7 +21,7 @@
 // core per fuzzing process; results do not depend on threads). Then kSteps steps: under the
 // sanitizers a shipped scene takes 20-200 ms; a step long enough to make nearly every contact pair
 // a candidate (dt = 1 s, a ball at 340 m/s) takes seconds, 66 s of wall time at worst in the first
-// campaign on a loaded machine (README).
+// campaign on a loaded machine (docs/testing.md).
 #include <algorithm>
 #include <cmath>
 #include <cstddef>

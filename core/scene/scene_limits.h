@@ -2,8 +2,8 @@
 // The values a scene file may hold, beyond their type: what makes physical sense for cloth, and
 // what keeps a run's work and its counters bounded. Each is refused at load time with its range in
 // the message ("must be a number in [1e-06, 1] s"), so a typo such as dt = 1e-12 or a thickness of
-// 1e6 m is caught before it costs hours, exhausts memory or overflows a count. The README's scene
-// tables list the same ranges.
+// 1e6 m is caught before it costs hours, exhausts memory or overflows a count. The scene tables of
+// presets/scenes/README.md list the same ranges.
 #include <cstdint>
 
 #include "util/json_fields.h"

@@ -15,7 +15,7 @@ struct TearingSpec {
   // second does not depend on the element size, and tips read the material ahead of them
   // (crackTipLength); false: the thesis' one pass per step (maxTearsPerStep lines), the next
   // step's dynamics relaxing the stress. The default (with stressLength 0.065 and incubation 0.06)
-  // is the resolution-independent mode: the same crack growth at 32², 48², 64² (README, Tearing).
+  // is the resolution-independent mode: the same crack growth at 32², 48², 64² (docs/tearing.md).
   bool propagate = true;
   double crackSpeed = 50.0;      // m/s (material space): with propagate, the fastest a crack tip runs
   int relaxRings = 2;            // vertices within this many edges of a new crack end are relaxed

@@ -5,7 +5,7 @@
 // the checks below, with the stage it points at and the setting to change. `weft run` stops there
 // (exit 3) unless asked to keep going; metrics.json reports it either way.
 //
-// The checks and their limits (documented in the README, "Health check"):
+// The checks and their limits (documented in docs/cli.md, "Health check"):
 //  - non-finite: a position or velocity is NaN or infinite;
 //  - strain: a triangle's largest principal Green strain exceeds 10 (a stretch of 360 %), far
 //    beyond any fabric (the measured ones are fitted to 17 %, knits tear before 100 %) and above

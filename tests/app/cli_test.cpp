@@ -433,7 +433,7 @@ TEST_F(WeftCli, TearingBenchReportsTheStepsThatToreApart) {
     if (k >= 5) value[header[k]] = std::stod(row[k]);
   }
   ASSERT_TRUE(value.contains("tearing_steps_per_repeat")) << lines[1];
-  // The window holds the pulled sheet's first tears at every resolution (README, crack growth).
+  // The window holds the pulled sheet's first tears at every resolution (docs/tearing.md, crack growth).
   EXPECT_GE(value["tearing_steps_per_repeat"], 1.0) << lines[2];
   EXPECT_LE(value["tearing_steps_per_repeat"], 20.0) << lines[2];
   EXPECT_GT(value["tears_per_repeat"], 0.0) << lines[2];

@@ -118,7 +118,7 @@ std::string withoutComments(const std::string& text) {
   return out;
 }
 
-// The example in docs/ (linked from the README) is this same file: regenerate it by this rule.
+// The example in docs/ (linked from docs/study.md) is this same file: regenerate it by this rule.
 TEST_F(StudyAnswersFile, DocsExampleIsTheFileBuiltFromTheThesisTables) {
   std::stringstream docs;
   docs << std::ifstream(fs::path(WEFT_SOURCE_DIR) / "docs" / "study" / "thesis-answers.csv").rdbuf();

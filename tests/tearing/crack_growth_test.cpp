@@ -5,7 +5,7 @@
 // Measured in the mode built for it: cracks run on within a step (propagate), the stress is read
 // averaged over 6.5 cm (stress_length_m), lips left out of it, and a new crack starts only after
 // 0.06 s above its strength (incubation_s): the default since issue 17, stated here in full so the
-// test keeps measuring it. Both scenes meet the goal there; the README's table shows how near its
+// test keeps measuring it. Both scenes meet the goal there; the table in docs/tearing.md shows how near its
 // edge that is (other lengths and delays fail on one of the two scenes). WEFT_CRACK_GROWTH_SETS
 // adds --set overrides (';'-separated, e.g. "tearing.incubation_s=0"; the one-pass rows are
 // "tearing.propagate=false;tearing.stress_length_m=0;tearing.incubation_s=0"), and

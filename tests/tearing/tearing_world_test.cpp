@@ -367,7 +367,7 @@ TEST(Tearing, Table41Cloth4TearsMostlyVerticallyOnAnEvenFabricAndNotOnDenimInThe
 // tears vertically only (0.94 of 1.65 m): through the ball's point from border to border and
 // along the right clamps, 0.44 m apart, and nothing joins them; no line across reaches the
 // horizontal strength (an isotropic table at it, 1050 N/m, never tears under this ball). So only
-// the first half is asserted unless WEFT_THESIS_CLOTH3_JOIN is set (README, Tearing, "What
+// the first half is asserted unless WEFT_THESIS_CLOTH3_JOIN is set (docs/tearing.md, "What
 // remains"): then the join is, and the test fails until the figure is reproduced.
 TEST(Tearing, Table41Cloth3OpensTwoVerticalTearsJoinedByAHorizontalOne) {
   const std::string scene = std::string(WEFT_SOURCE_DIR) + "/presets/scenes/ball-into-sheet-table4.1-cloth3.json";
@@ -385,7 +385,7 @@ TEST(Tearing, Table41Cloth3OpensTwoVerticalTearsJoinedByAHorizontalOne) {
   EXPECT_GE(flap.right, 0.1);
   EXPECT_GE(flap.separation, 0.08) << "the two vertical tears should be apart";
   if (std::getenv("WEFT_THESIS_CLOTH3_JOIN") == nullptr) {
-    GTEST_SKIP() << "the horizontal join of Figure 4.5 is not reproduced yet (README, Tearing)";
+    GTEST_SKIP() << "the horizontal join of Figure 4.5 is not reproduced yet (docs/tearing.md, What remains)";
   }
   EXPECT_GE(flap.joining, 0.5 * flap.separation) << "a horizontal tear should join the vertical ones";
 }
