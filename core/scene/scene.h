@@ -11,6 +11,7 @@
 #include "material/material.h"
 #include "scene/contact_spec.h"
 #include "scene/tearing_spec.h"
+#include "tearing/strength_map.h"
 #include "util/types.h"
 
 namespace weft {
@@ -81,6 +82,8 @@ struct ClothSpec {
   std::string materialName;      // the preset's name, or "inline"
   Material material;             // resolved material (preset or inline)
   double weftAngleDeg = 0.0;     // weft direction U in material space, degrees from material x
+  // A painted multiplier on the tear table's strength (tearing/strength_map.h), or none.
+  std::optional<TearStrengthMap> tearStrengthMap;
   std::vector<PinGroup> pins;
   ClothAppearance appearance;
 

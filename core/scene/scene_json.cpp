@@ -116,6 +116,40 @@ void parseTearTableField(const FieldReader& r, const SceneReadContext& ctx, Clot
   }
 }
 
+// A painted multiplier on the tear table's strength (tearing/strength_map.h):
+// {"image": "FILE.png", "black": 0.25, "white": 1.0, "reach_m": 0.04,
+//  "extent": {"min": [x, y], "max": [x, y]}}; the image is found as OBJ meshes are.
+void parseTearStrengthMapField(const FieldReader& parent, const SceneReadContext& ctx, ClothSpec& cloth) {
+  if (!parent.has("tear_strength_map")) return;
+  const json& value = parent.at("tear_strength_map");
+  const std::string at = parent.pointer("tear_strength_map");
+  if (!value.is_object()) {
+    parent.fail(at, "must be an object, e.g. {\"image\": \"perforation.png\", \"black\": 0.2, \"white\": 1}, " +
+                        got(value));
+  }
+  const FieldReader r(value, at, ctx.file, {"image", "black", "white", "reach_m", "extent"});
+  TearStrengthMap map;
+  map.image = r.stringValue(r.required("image", "the grayscale image's file (PNG), found as OBJ meshes are"),
+                            r.pointer("image"));
+  const Range multiplier{0.0, 1000.0, true, ""};
+  map.black = r.number("black", map.black, multiplier, "the multiplier on the tear strength where the image is black");
+  map.white = r.number("white", map.white, multiplier, "the multiplier on the tear strength where the image is white");
+  map.reach = r.number("reach_m", map.reach, Range{0.0, 1.0, true, "m"},
+                       "how far along a line the map is read either side of its vertex (m)");
+  if (r.has("extent")) {
+    const FieldReader box(r.at("extent"), r.pointer("extent"), ctx.file, {"min", "max"});
+    map.lo = vec2Value(box, box.required("min", "the image's [x, y] minimum in material space (m)"), box.pointer("min"));
+    map.hi = vec2Value(box, box.required("max", "the image's [x, y] maximum in material space (m)"), box.pointer("max"));
+    if (!(map.hi.x() > map.lo.x() && map.hi.y() > map.lo.y())) {
+      box.fail(box.pointer("max"), "must be above \"min\" in x and y (the image's rectangle in material space)");
+    }
+    map.explicitExtent = true;
+  }
+  const fs::path file = resolveAsset(map.image, r, "image", ctx);
+  readStrengthImage(file.string(), ctx.file, r.pointer("image"), map);
+  cloth.tearStrengthMap = std::move(map);
+}
+
 const std::vector<std::string>& cornerNames() {
   static const std::vector<std::string> names{"top_left", "top_right", "bottom_left", "bottom_right"};
   return names;
@@ -273,7 +307,8 @@ ClothAppearance parseAppearance(const json& j, const std::string& pointer, const
 
 ClothSpec parseCloth(const json& j, const std::string& pointer, std::size_t index, const SceneReadContext& ctx) {
   const FieldReader r(j, pointer, ctx.file,
-                      {"name", "mesh", "placement", "material", "tear_table", "weft_angle_deg", "pins", "appearance"});
+                      {"name", "mesh", "placement", "material", "tear_table", "tear_strength_map", "weft_angle_deg", "pins",
+                       "appearance"});
   ClothSpec cloth;
   cloth.name = r.string("name", index == 0 ? std::string("cloth") : "cloth" + std::to_string(index));
   requireSafeName(r, "name", cloth.name);
@@ -281,6 +316,7 @@ ClothSpec parseCloth(const json& j, const std::string& pointer, std::size_t inde
   if (r.has("placement")) cloth.placement = parsePlacement(r.at("placement"), r.pointer("placement"), ctx);
   parseMaterialField(r, ctx, cloth);
   parseTearTableField(r, ctx, cloth);
+  parseTearStrengthMapField(r, ctx, cloth);
   cloth.weftAngleDeg = r.number("weft_angle_deg", cloth.weftAngleDeg, Bound::Finite);
   if (r.has("pins")) {
     const json& groups = r.array("pins");

@@ -179,6 +179,18 @@ Cloth buildCloth(const ClothSpec& spec, const std::string& sceneFile, int clothI
   }
   assignLumpedMasses(cloth.mesh, cloth.material.areaDensity);
   rebuildElements(cloth);
+  if (spec.tearStrengthMap) {
+    // By default the map spans the cloth's material-space bounding box (strength_map.h).
+    Vec2 lo = Vec2::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+    for (const Triangle& t : cloth.mesh.tris) {
+      for (const Vec2& p : t.rest) {
+        lo = lo.cwiseMin(p);
+        hi = hi.cwiseMax(p);
+      }
+    }
+    cloth.tearStrengthMap = spec.tearStrengthMap;
+    prepareStrengthMap(*cloth.tearStrengthMap, lo, hi);
+  }
 
   for (size_t g = 0; g < spec.pins.size(); ++g) {
     PinTrack track;

@@ -1,5 +1,6 @@
 #pragma once
 // One simulated cloth: its mesh, material, weft angle, precomputed elements and pins.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -10,6 +11,7 @@
 #include "mesh/topology_change.h"
 #include "scene/scene.h"
 #include "sim/stage_profile.h"
+#include "tearing/strength_map.h"
 
 namespace weft {
 
@@ -25,6 +27,8 @@ struct Cloth {
   ClothMesh mesh;
   Material material;
   double weftAngleRad = 0.0;
+  // A painted multiplier on the tear table's strength over material space (strength_map.h).
+  std::optional<TearStrengthMap> tearStrengthMap;
   std::vector<MembraneElement> membranes;  // one per triangle, same ids
   std::vector<BendingHinge> hinges;        // one per interior edge with stiffness
   std::vector<PinTrack> pins;

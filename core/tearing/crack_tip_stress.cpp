@@ -55,12 +55,13 @@ void openRange(const ClothMesh& mesh, const VertexFan& fan, double& start, doubl
 }
 
 TearCandidate evaluateRay(const ClothMesh& mesh, const VertexFan& fan, const std::vector<Mat2>& stress,
-                          const TearTable& table, double weftAngleRad, double scale, double length, double angle) {
+                          const TearTable& table, double weftAngleRad, const StrengthScale& scale, double length,
+                          double angle) {
   TearCandidate line;
   line.angle = angle;
   line.separation = meanTractionAhead(mesh, fan, stress, Vec2(std::cos(angle), std::sin(angle)), length).norm();
   line.alphaDeg = angleFromWarpDeg(angle, weftAngleRad);
-  line.required = scale * requiredStrength(table, line.alphaDeg);
+  line.required = scale.of(angle) * requiredStrength(table, line.alphaDeg);
   line.ratio = line.separation / line.required;
   line.ray = true;
   line.crackTip = true;
@@ -68,7 +69,7 @@ TearCandidate evaluateRay(const ClothMesh& mesh, const VertexFan& fan, const std
 }
 
 std::vector<TearCandidate> sampleRays(const ClothMesh& mesh, const VertexFan& fan, const std::vector<Mat2>& stress,
-                                      const TearTable& table, double weftAngleRad, double scale, double length,
+                                      const TearTable& table, double weftAngleRad, const StrengthScale& scale, double length,
                                       int samples, double& start, double& step) {
   double span = 0.0;
   openRange(mesh, fan, start, span);
@@ -117,7 +118,7 @@ Vec2 meanTractionAhead(const ClothMesh& mesh, const VertexFan& fan, const std::v
 }
 
 TearCandidate bestTipLine(const ClothMesh& mesh, const VertexFan& fan, const std::vector<Mat2>& triangleStress,
-                          const TearTable& table, double weftAngleRad, double strengthScale, double length,
+                          const TearTable& table, double weftAngleRad, const StrengthScale& strengthScale, double length,
                           int samples) {
   if (fan.triangles.empty()) return TearCandidate{};
   double start = 0.0, step = 0.0;
@@ -136,7 +137,7 @@ TearCandidate bestTipLine(const ClothMesh& mesh, const VertexFan& fan, const std
 
 std::vector<TearCandidate> tipLinesAboveOne(const ClothMesh& mesh, const VertexFan& fan,
                                             const std::vector<Mat2>& triangleStress, const TearTable& table,
-                                            double weftAngleRad, double strengthScale, double length, int samples) {
+                                            double weftAngleRad, const StrengthScale& strengthScale, double length, int samples) {
   if (fan.triangles.empty()) return {};
   double start = 0.0, step = 0.0;
   const std::vector<TearCandidate> rays =

@@ -41,12 +41,12 @@ Vec2 meanTractionAhead(const ClothMesh& mesh, const VertexFan& fan, const std::v
 // required, alpha, omega filled; the caller fills vertex and position), sampling `samples`
 // directions over the open fan and refining the best.
 TearCandidate bestTipLine(const ClothMesh& mesh, const VertexFan& fan, const std::vector<Mat2>& triangleStress,
-                          const TearTable& table, double weftAngleRad, double strengthScale, double length,
+                          const TearTable& table, double weftAngleRad, const StrengthScale& strengthScale, double length,
                           int samples);
 
 // Every ray from the tip with omega > 1 at a local maximum of the sampling, best first.
 std::vector<TearCandidate> tipLinesAboveOne(const ClothMesh& mesh, const VertexFan& fan,
                                             const std::vector<Mat2>& triangleStress, const TearTable& table,
-                                            double weftAngleRad, double strengthScale, double length, int samples);
+                                            double weftAngleRad, const StrengthScale& strengthScale, double length, int samples);
 
 }  // namespace weft

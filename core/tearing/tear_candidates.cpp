@@ -10,6 +10,7 @@
 
 #include "tearing/golden_section.h"
 #include "tearing/separation_strength.h"
+#include "tearing/strength_map.h"
 
 namespace weft {
 namespace {
@@ -17,12 +18,13 @@ namespace {
 constexpr double kRadToDeg = 180.0 / std::numbers::pi;
 
 // omega of the line at `angle` whose separation strength is `zeta`.
-TearCandidate evaluateLine(double angle, double zeta, const TearTable& table, double weftAngleRad, double scale) {
+TearCandidate evaluateLine(double angle, double zeta, const TearTable& table, double weftAngleRad,
+                           const StrengthScale& scale) {
   TearCandidate line;
   line.angle = angle;
   line.separation = zeta;
   line.alphaDeg = angleFromWarpDeg(angle, weftAngleRad);
-  line.required = scale * requiredStrength(table, line.alphaDeg);
+  line.required = scale.of(angle) * requiredStrength(table, line.alphaDeg);
   line.ratio = zeta / line.required;
   return line;
 }
@@ -31,7 +33,7 @@ TearCandidate evaluateLine(double angle, double zeta, const TearTable& table, do
 // strength), so a line whose zeta cannot beat `best` skips the direction and table lookups (the
 // margin covers rounding: the result is the same as evaluating everything).
 void keepIfBetter(const StressFan& fan, double angle, const TearTable& table, double weakest, double weftAngleRad,
-                  double scale, TearCandidate& best) {
+                  const StrengthScale& scale, TearCandidate& best) {
   const double zeta = separationStrength(fan, angle);
   if (zeta < best.ratio * weakest * (1.0 - 1e-12)) return;
   const TearCandidate trial = evaluateLine(angle, zeta, table, weftAngleRad, scale);
@@ -41,7 +43,7 @@ void keepIfBetter(const StressFan& fan, double angle, const TearTable& table, do
 // The thesis' lines: both edges and the bisector of each incident corner. On an open fan the
 // border edges are skipped (a ray along the border separates nothing).
 TearCandidate bestThesisLine(const StressFan& fan, const TearTable& table, double weakest, double weftAngleRad,
-                             double scale, TearSearchCounts& counts) {
+                             const StrengthScale& scale, TearSearchCounts& counts) {
   TearCandidate best;
   for (const FanSector& sector : fan.sectors) {
     for (const double angle : {sector.start, sector.start + 0.5 * sector.span, sector.start + sector.span}) {
@@ -66,7 +68,7 @@ void sampledRange(const StressFan& fan, double maxTurnRad, double& from, double&
 }
 
 TearCandidate bestDenseLine(const StressFan& fan, const TearTable& table, double weakest, double weftAngleRad,
-                            double scale, int samples, double maxTurnRad, TearSearchCounts& counts) {
+                            const StrengthScale& scale, int samples, double maxTurnRad, TearSearchCounts& counts) {
   double from = 0.0, range = 0.0;
   sampledRange(fan, maxTurnRad, from, range);
   const double step = range / samples;
@@ -89,9 +91,9 @@ TearCandidate bestDenseLine(const StressFan& fan, const TearTable& table, double
 }  // namespace
 
 TearCandidate bestLineAt(const StressFan& fan, const TearTable& table, double weftAngleRad,
-                         const TearSearchSettings& settings, double strengthScale, TearSearchCounts& counts,
-                         double maxTurnRad) {
-  const double weakest = strengthScale * weakestStrength(table);
+                         const TearSearchSettings& settings, const StrengthScale& strengthScale,
+                         TearSearchCounts& counts, double maxTurnRad) {
+  const double weakest = strengthScale.lowest() * weakestStrength(table);
   return settings.lines == CandidateLines::Thesis
              ? bestThesisLine(fan, table, weakest, weftAngleRad, strengthScale, counts)
              : bestDenseLine(fan, table, weakest, weftAngleRad, strengthScale, settings.denseDirections, maxTurnRad,
@@ -109,16 +111,16 @@ struct LinePiece {
   double edge = 0.0;   // a sector edge inside the piece (rad), NaN when there is none: split there
 };
 
-LinePiece boundPiece(const StressFan& fan, const TearTable& table, double weftAngleRad, double scale,
+LinePiece boundPiece(const StressFan& fan, const TearTable& table, double weftAngleRad, const StrengthScale& scale,
                      double angle, double halfWidth) {
   LinePiece piece;
   piece.angle = angle;
   piece.halfWidth = halfWidth;
   const LinePieceBound lines = separationOverPiece(fan, angle, halfWidth);
   const double alpha = angleFromWarpDeg(angle, weftAngleRad);
-  piece.omega = lines.zeta / (scale * requiredStrength(table, alpha));
+  piece.omega = lines.zeta / (scale.of(angle) * requiredStrength(table, alpha));
   const double halfWidthDeg = halfWidth * kRadToDeg;
-  piece.bound = lines.bound / (scale * weakestStrengthBetween(table, alpha - halfWidthDeg, alpha + halfWidthDeg));
+  piece.bound = lines.bound / (scale.lowest() * weakestStrengthBetween(table, alpha - halfWidthDeg, alpha + halfWidthDeg));
   piece.edge = lines.edge;
   return piece;
 }
@@ -171,8 +173,8 @@ int forEachFirstPiece(const StressFan& fan, double widest, const Visit& visit) {
 
 }  // namespace
 
-double omegaBoundAt(const StressFan& fan, const TearTable& table, double weftAngleRad, double strengthScale,
-                    TearSearchCounts& counts) {
+double omegaBoundAt(const StressFan& fan, const TearTable& table, double weftAngleRad,
+                    const StrengthScale& strengthScale, TearSearchCounts& counts) {
   double bound = 0.0;
   forEachFirstPiece(fan, kWidestBoundPiece, [&](double angle, double halfWidth) {
     ++counts.linesEvaluated;
@@ -182,12 +184,14 @@ double omegaBoundAt(const StressFan& fan, const TearTable& table, double weftAng
 }
 
 bool anyLineAboveOneAt(const StressFan& fan, const TearTable& table, double weftAngleRad, double hintAngle,
-                       double& angle, TearSearchCounts& counts) {
+                       double& angle, TearSearchCounts& counts, const StrengthScale& scale) {
   // A ray must lie inside its open fan (separationStrength's precondition).
   const double intoFan = fan.closed ? 0.0 : std::remainder(hintAngle - fan.openStart - 0.5 * fan.openSpan, 2.0 * std::numbers::pi);
   if (std::isfinite(hintAngle) && std::abs(intoFan) < 0.5 * fan.openSpan) {
     ++counts.linesEvaluated;
-    if (separationStrength(fan, hintAngle) / requiredStrength(table, angleFromWarpDeg(hintAngle, weftAngleRad)) > 1.0) {
+    if (separationStrength(fan, hintAngle) /
+            (scale.of(hintAngle) * requiredStrength(table, angleFromWarpDeg(hintAngle, weftAngleRad))) >
+        1.0) {
       angle = hintAngle;
       return true;
     }
@@ -204,7 +208,7 @@ bool anyLineAboveOneAt(const StressFan& fan, const TearTable& table, double weft
   auto consider = [&](double at, double halfWidth) {
     if (found) return;
     ++counts.linesEvaluated;
-    const LinePiece piece = boundPiece(fan, table, weftAngleRad, 1.0, at, halfWidth);
+    const LinePiece piece = boundPiece(fan, table, weftAngleRad, scale, at, halfWidth);
     if (piece.omega > 1.0) {
       angle = at;
       found = true;
@@ -228,8 +232,8 @@ bool anyLineAboveOneAt(const StressFan& fan, const TearTable& table, double weft
 }
 
 std::vector<TearCandidate> linesAboveOneAt(const StressFan& fan, const TearTable& table, double weftAngleRad,
-                                           const TearSearchSettings& settings, double strengthScale,
-                                           double maxTurnRad) {
+                                           const TearSearchSettings& settings,
+                                           const StrengthScale& strengthScale, double maxTurnRad) {
   std::vector<TearCandidate> lines;
   if (settings.lines == CandidateLines::Thesis) {
     for (const FanSector& sector : fan.sectors) {

@@ -15,6 +15,7 @@
 
 #include "mesh/cloth_mesh.h"
 #include "tearing/separation_strength.h"
+#include "tearing/strength_map.h"
 #include "tearing/tear_table.h"
 #include "util/types.h"
 
@@ -67,29 +68,30 @@ struct TearSearchCounts {
 double angleFromWarpDeg(double angle, double weftAngleRad);
 
 // The best line of one vertex's fan (a full TearCandidate but for its vertex, position and ray
-// flag), with the table's strengths scaled by `strengthScale` (a crack tip's propagation factor).
+// flag), with the table's strengths scaled by `strengthScale` (a crack tip's propagation factor,
+// times a painted strength map's mean along each line: strength_map.h).
 TearCandidate bestLineAt(const StressFan& fan, const TearTable& table, double weftAngleRad,
-                         const TearSearchSettings& settings, double strengthScale, TearSearchCounts& counts,
+                         const TearSearchSettings& settings, const StrengthScale& strengthScale, TearSearchCounts& counts,
                          double maxTurnRad = kNoTurnLimit);
 
 // A bound on omega over every line (or ray) of the fan, sharper than the fan's bound over its
 // weakest strength: the fan's lines in 5 degree pieces, each bounded from its middle line's sides
 // (separationBoundNear) over the weakest strength within the piece's directions. Costs 36 lines.
-double omegaBoundAt(const StressFan& fan, const TearTable& table, double weftAngleRad, double strengthScale,
-                    TearSearchCounts& counts);
+double omegaBoundAt(const StressFan& fan, const TearTable& table, double weftAngleRad,
+                    const StrengthScale& strengthScale, TearSearchCounts& counts);
 
 // Whether some line (or ray) of the fan has omega > 1 as a crack start, answered as early as
 // possible: the line at `hintAngle` first, then a branch and bound over pieces of the fan's lines
 // that splits only the pieces whose bound exceeds 1. `angle` gets the line found. For the
 // incubation of new cracks, which needs only whether a vertex is overloaded, not its best line.
 bool anyLineAboveOneAt(const StressFan& fan, const TearTable& table, double weftAngleRad, double hintAngle,
-                       double& angle, TearSearchCounts& counts);
+                       double& angle, TearSearchCounts& counts, const StrengthScale& scale = 1.0);
 
 // The other ways a vertex could open, when its best line is refused by the mesh: every line with
 // omega > 1, best first (the thesis' lines; for dense lines, the local maxima of the sampling).
 std::vector<TearCandidate> linesAboveOneAt(const StressFan& fan, const TearTable& table, double weftAngleRad,
-                                           const TearSearchSettings& settings, double strengthScale,
-                                           double maxTurnRad = kNoTurnLimit);
+                                           const TearSearchSettings& settings,
+                                           const StrengthScale& strengthScale, double maxTurnRad = kNoTurnLimit);
 
 // The best line of every vertex whose best omega exceeds 1, in vertex order (with onlyTheBest,
 // just the one selectTears would choose first).

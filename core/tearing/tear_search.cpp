@@ -141,7 +141,7 @@ void TearSearch::screenAndLookAtAll(const ClothMesh& mesh, const std::vector<Tri
     if (settings_.skipByBound && !onBorder_[v] && rowStart_[v] < rowStart_[v + 1]) {
       double weighted = 0.0;
       for (int i = rowStart_[v]; i < rowStart_[v + 1]; ++i) weighted += largestStress_[around_[i]] * aroundSpan_[i];
-      if (0.25 * weighted * screen < 1.0) {
+      if (0.25 * weighted * screen < lowestMultiplierAt(mesh, v)) {
         ++counts.vertices;
         ++counts.skipped;
         continue;
@@ -206,7 +206,8 @@ bool TearSearch::overloadedAsStart(const ClothMesh& mesh, const std::vector<Tria
   if (vertex < 0 || vertex >= static_cast<int>(bound_.size()) || bound_[vertex] < 1.0) return false;
   if (place_[vertex] == CrackPlace::Tip) return false;
   fanOf(mesh, corners, stress, vertex, fan_);
-  return anyLineAboveOneAt(fan_, *table_, weftAngleRad_, hintAngle, angle, counts);
+  return anyLineAboveOneAt(fan_, *table_, weftAngleRad_, hintAngle, angle, counts,
+                           scaleAt(mesh, vertex, 1.0, !fan_.closed));
 }
 
 CrackPlace TearSearch::fanOf(const ClothMesh& mesh, const std::vector<TriangleCorners>& corners,
@@ -251,7 +252,8 @@ void TearSearch::boundAt(const ClothMesh& mesh, const std::vector<TriangleCorner
   const double scale = place == CrackPlace::Tip ? table_->propagationFactor : 1.0;
   // The margin covers the rounding of the bound itself, so the skip never changes a result.
   bound_[vertex] = settings_.skipByBound
-                       ? separationStrengthBound(fan_) * (1.0 + 1e-9) / (scale * weakestStrength(*table_))
+                       ? separationStrengthBound(fan_) * (1.0 + 1e-9) /
+                             (scale * lowestMultiplierAt(mesh, vertex) * weakestStrength(*table_))
                        : std::numeric_limits<double>::infinity();
   if (bound_[vertex] < 1.0) ++counts.skipped;
 }
@@ -301,7 +303,8 @@ std::optional<TearCandidate> TearSearch::best(const ClothMesh& mesh, const std::
     }
     if (gated_ && !mature_[v] && place != CrackPlace::Tip) {
       double angle = 0.0;
-      if (anyLineAboveOneAt(fan_, *table_, weftAngleRad_, principalLineAngle(fan_), angle, counts)) {
+      if (anyLineAboveOneAt(fan_, *table_, weftAngleRad_, principalLineAngle(fan_), angle, counts,
+                            scaleAt(mesh, v, 1.0, !fan_.closed))) {
         newlyOverloaded_.push_back(Overloaded{v, angle});
         held_[v] = 1;
       }
@@ -312,7 +315,7 @@ std::optional<TearCandidate> TearSearch::best(const ClothMesh& mesh, const std::
       // sheet that pass the fan's bound are settled by it (they stay below 1), and the others wait
       // again behind the leader if it already beats them.
       sharpened_[v] = 1;
-      bound_[v] = std::min(bound_[v], omegaBoundAt(fan_, *table_, weftAngleRad_, 1.0, counts));
+      bound_[v] = std::min(bound_[v], omegaBoundAt(fan_, *table_, weftAngleRad_, scaleAt(mesh, v, 1.0, !fan_.closed), counts));
       if (bound_[v] < 1.0) continue;
       if (bound_[v] < leading) {
         pushEntry(waiting_, Entry{bound_[v], v, version_[v]});
@@ -333,13 +336,17 @@ std::optional<TearCandidate> TearSearch::best(const ClothMesh& mesh, const std::
 
 TearCandidate TearSearch::bestLineOf(const ClothMesh& mesh, const std::vector<Mat2>& stress, int vertex,
                                      CrackPlace place, TearSearchCounts& counts) {
-  if (place != CrackPlace::Tip) return bestLineAt(fan_, *table_, weftAngleRad_, settings_, 1.0, counts);
+  if (place != CrackPlace::Tip) {
+    return bestLineAt(fan_, *table_, weftAngleRad_, settings_, scaleAt(mesh, vertex, 1.0, !fan_.closed), counts);
+  }
   if (!(settings_.tipLength > 0.0)) {
-    return bestLineAt(fan_, *table_, weftAngleRad_, settings_, table_->propagationFactor, counts, settings_.maxKinkRad);
+    return bestLineAt(fan_, *table_, weftAngleRad_, settings_,
+                      scaleAt(mesh, vertex, table_->propagationFactor, !fan_.closed), counts, settings_.maxKinkRad);
   }
   counts.linesEvaluated += settings_.tipDirections;
   return bestTipLine(mesh, walkFan(mesh, vertex, triangleAt_[vertex]), stress, *table_, weftAngleRad_,
-                     table_->propagationFactor, settings_.tipLength, settings_.tipDirections);
+                     scaleAt(mesh, vertex, table_->propagationFactor, true), settings_.tipLength,
+                     settings_.tipDirections);
 }
 
 TearCandidate TearSearch::tipLineAt(const ClothMesh& mesh, const std::vector<TriangleCorners>& corners,
@@ -350,6 +357,19 @@ TearCandidate TearSearch::tipLineAt(const ClothMesh& mesh, const std::vector<Tri
   const CrackPlace place = fanOf(mesh, corners, stress, vertex, fan_);
   if (place != CrackPlace::Tip) return TearCandidate{};
   return candidateAt(mesh, vertex, fan_, place, bestLineOf(mesh, stress, vertex, place, counts));
+}
+
+StrengthScale TearSearch::scaleAt(const ClothMesh& mesh, int vertex, double factor, bool ray) const {
+  if (map_ == nullptr) return StrengthScale(factor);
+  const Triangle& t = mesh.tris[triangleAt_[vertex]];
+  return StrengthScale(factor, map_, t.rest[cornerOf(t, vertex)], ray);
+}
+
+double TearSearch::lowestMultiplierAt(const ClothMesh& mesh, int vertex) const {
+  if (map_ == nullptr) return 1.0;
+  const Triangle& t = mesh.tris[triangleAt_[vertex]];
+  // The same margin as StrengthScale::lowest.
+  return lowestStrengthMultiplierNear(*map_, t.rest[cornerOf(t, vertex)]) * (1.0 - 1e-9);
 }
 
 bool TearSearch::nearCrack(const ClothMesh& mesh, const Vec2& restPosition, double radius) const {
@@ -367,9 +387,11 @@ std::vector<TearCandidate> TearSearch::linesAt(const ClothMesh& mesh, const std:
   std::vector<TearCandidate> lines =
       place == CrackPlace::Tip && settings_.tipLength > 0.0
           ? tipLinesAboveOne(mesh, walkFan(mesh, vertex, triangleAt_[vertex]), stress, *table_, weftAngleRad_,
-                             table_->propagationFactor, settings_.tipLength, settings_.tipDirections)
+                             scaleAt(mesh, vertex, table_->propagationFactor, true), settings_.tipLength,
+                             settings_.tipDirections)
           : linesAboveOneAt(fan_, *table_, weftAngleRad_, settings_,
-                            place == CrackPlace::Tip ? table_->propagationFactor : 1.0,
+                            scaleAt(mesh, vertex, place == CrackPlace::Tip ? table_->propagationFactor : 1.0,
+                                    !fan_.closed),
                             place == CrackPlace::Tip ? settings_.maxKinkRad : kNoTurnLimit);
   for (TearCandidate& line : lines) line = candidateAt(mesh, vertex, fan_, place, line);
   return lines;

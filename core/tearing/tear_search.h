@@ -20,6 +20,7 @@
 
 #include "mesh/cloth_mesh.h"
 #include "tearing/separation_strength.h"
+#include "tearing/strength_map.h"
 #include "tearing/tear_candidates.h"
 #include "tearing/tear_table.h"
 
@@ -39,6 +40,9 @@ class TearSearch {
     long long tears = -1;  // the cloth's tears so far
     bool operator==(const Topology&) const = default;
   };
+  // The cloth's painted strength (strength_map.h), or none; read by every later call, bounds
+  // included. Set before start.
+  void setStrengthMap(const TearStrengthMap* map) { map_ = map; }
   void start(const ClothMesh& mesh, const std::vector<TriangleCorners>& corners, const std::vector<Mat2>& stress,
              const TearTable& table, double weftAngleRad, const TearSearchSettings& settings, Topology topology,
              TearSearchCounts& counts);
@@ -93,12 +97,17 @@ class TearSearch {
   CrackPlace fanOf(const ClothMesh& mesh, const std::vector<TriangleCorners>& corners, const std::vector<Mat2>& stress,
              int vertex, StressFan& fan) const;
   double strengthScaleAt(const ClothMesh& mesh, int vertex, const StressFan& fan) const;
+  // The strength scale of the vertex's lines (factor times the map's, strength_map.h), and the
+  // smallest map multiplier any of its lines can read (1 without a map).
+  StrengthScale scaleAt(const ClothMesh& mesh, int vertex, double factor, bool ray) const;
+  double lowestMultiplierAt(const ClothMesh& mesh, int vertex) const;
   TearCandidate bestLineOf(const ClothMesh& mesh, const std::vector<Mat2>& stress, int vertex, CrackPlace place,
                            TearSearchCounts& counts);
   TearCandidate candidateAt(const ClothMesh& mesh, int vertex, const StressFan& fan, CrackPlace place,
                             TearCandidate line) const;
 
   const TearTable* table_ = nullptr;
+  const TearStrengthMap* map_ = nullptr;
   double weftAngleRad_ = 0.0;
   TearSearchSettings settings_;
   std::vector<int> triangleAt_;          // per vertex: a triangle that holds it (kNone: none)

@@ -163,7 +163,8 @@ TopologyChange TearStage::tearCloth(Cloth& cloth, int clothIndex, double time, d
       // Only where some triangle could reach a run-on tip's share of the weakest strength (the
       // largest principal stress bounds zeta within pi: separation_strength.h's bound).
       const double threshold =
-          kRunOnRatio * std::min(1.0, table.propagationFactor) * weakestStrength(table) / std::numbers::pi;
+          kRunOnRatio * std::min(1.0, table.propagationFactor) * weakestStrength(table) / std::numbers::pi *
+          (cloth.tearStrengthMap ? std::min(1.0, cloth.tearStrengthMap->smallest) : 1.0);
       nonlocal_[clothIndex].average(cloth.mesh, localStress_, spec_.stressLength, threshold, stress_);
     } else {
       stress_ = localStress_;
@@ -171,6 +172,7 @@ TopologyChange TearStage::tearCloth(Cloth& cloth, int clothIndex, double time, d
   }
   {
     StageTimer timer(profile, "tear_search");
+    search_.setStrengthMap(cloth.tearStrengthMap ? &*cloth.tearStrengthMap : nullptr);
     search_.start(cloth.mesh, corners, stress_, table, cloth.weftAngleRad, searchSettings_,
                   TearSearch::Topology{clothIndex, clothTears_[clothIndex]}, stats_.search);
     if (spec_.incubation > 0.0 && !incubated(Incubating{time - dt, 0.0}, time, dt)) {
