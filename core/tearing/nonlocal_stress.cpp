@@ -22,6 +22,23 @@ constexpr std::size_t kMaxNeighbours = 256;
 // at its own resolution, not spread over a group.
 constexpr std::size_t kExactNeighbours = 64;
 
+// Walks out from the triangles already in `region` (stamped), across shared edges, adding each
+// triangle first met that `within` accepts: the region grows breadth first, in a fixed order.
+template <typename Within>
+void walkOut(const ClothMesh& mesh, std::vector<int>& region, std::vector<int>& stamp, int currentStamp,
+             const Within& within) {
+  for (std::size_t next = 0; next < region.size(); ++next) {
+    const Triangle& tri = mesh.tris[region[next]];
+    for (int e : tri.edge) {
+      const Edge& edge = mesh.edges[e];
+      const int other = edge.tri[0] == region[next] ? edge.tri[1] : edge.tri[0];
+      if (other == kNone || stamp[other] == currentStamp) continue;
+      stamp[other] = currentStamp;
+      if (within(other)) region.push_back(other);
+    }
+  }
+}
+
 }  // namespace
 
 double largestPrincipal(const Mat2& s) {
@@ -54,16 +71,8 @@ void NonlocalStress::gather(const ClothMesh& mesh, int t, double reach) {
   stamp_[t] = currentStamp_;
   const Vec2 centre = centroid_[t];
   const double reach2 = reach * reach;
-  for (std::size_t next = 0; next < region_.size(); ++next) {
-    const Triangle& tri = mesh.tris[region_[next]];
-    for (int e : tri.edge) {
-      const Edge& edge = mesh.edges[e];
-      const int other = edge.tri[0] == region_[next] ? edge.tri[1] : edge.tri[0];
-      if (other == kNone || stamp_[other] == currentStamp_) continue;
-      stamp_[other] = currentStamp_;
-      if ((centroid_[other] - centre).squaredNorm() <= reach2) region_.push_back(other);
-    }
-  }
+  walkOut(mesh, region_, stamp_, currentStamp_,
+          [&](int other) { return (centroid_[other] - centre).squaredNorm() <= reach2; });
 }
 
 void NonlocalStress::gatherAround(const ClothMesh& mesh, const std::vector<int>& seeds, double reach) {
@@ -80,22 +89,12 @@ void NonlocalStress::gatherAround(const ClothMesh& mesh, const std::vector<int>&
     region_.push_back(t);
   }
   const double reach2 = reach * reach;
-  const auto withinReach = [&](int u) {
+  walkOut(mesh, region_, stamp_, currentStamp_, [&](int other) {
     for (int t : seeds) {
-      if ((centroid_[u] - centroid_[t]).squaredNorm() <= reach2) return true;
+      if ((centroid_[other] - centroid_[t]).squaredNorm() <= reach2) return true;
     }
     return false;
-  };
-  for (std::size_t next = 0; next < region_.size(); ++next) {
-    const Triangle& tri = mesh.tris[region_[next]];
-    for (int e : tri.edge) {
-      const Edge& edge = mesh.edges[e];
-      const int other = edge.tri[0] == region_[next] ? edge.tri[1] : edge.tri[0];
-      if (other == kNone || stamp_[other] == currentStamp_) continue;
-      stamp_[other] = currentStamp_;
-      if (withinReach(other)) region_.push_back(other);
-    }
-  }
+  });
 }
 
 void NonlocalStress::thin(int t, std::vector<Neighbour>& list) {
