@@ -69,43 +69,29 @@ void popEntry(std::vector<E>& heap) {
 
 void TearSearch::start(const ClothMesh& mesh, const std::vector<TriangleCorners>& corners,
                        const std::vector<Mat2>& stress, const TearTable& table, double weftAngleRad,
-                       const TearSearchSettings& settings, Topology topology, TearSearchCounts& counts) {
+                       const TearSearchSettings& settings, TearSearchCounts& counts) {
   table_ = &table;
   weftAngleRad_ = weftAngleRad;
   settings_ = settings;
   const int n = mesh.vertexCount();
-  // Most steps do not tear: the rows, the triangle held per vertex and the border stay as the last
-  // start found them (a tear's refresh moves triangleAt_, so after one they are found again; a
-  // kept triangleAt_ must be the rebuild's, as fan walks start from it).
-  const bool sameRows = topology.cloth >= 0 && topology == rowsFor_ && rowsVertices_ == mesh.x.size() &&
-                        rowsTriangles_ == mesh.tris.size();
-  if (!sameRows) {
-    triangleAt_.assign(n, kNone);
-    rowStart_.assign(n + 1, 0);
-    for (int t = 0; t < mesh.triangleCount(); ++t) {
-      for (int v : mesh.tris[t].v) {
-        triangleAt_[v] = t;
-        ++rowStart_[v + 1];
-      }
+  triangleAt_.assign(n, kNone);
+  rowStart_.assign(n + 1, 0);
+  for (int t = 0; t < mesh.triangleCount(); ++t) {
+    for (int v : mesh.tris[t].v) {
+      triangleAt_[v] = t;
+      ++rowStart_[v + 1];
     }
-    for (int v = 0; v < n; ++v) rowStart_[v + 1] += rowStart_[v];
-    around_.resize(rowStart_[n]);
-    aroundSpan_.resize(rowStart_[n]);
-    std::vector<int> fill(rowStart_.begin(), rowStart_.end() - 1);
-    for (int t = 0; t < mesh.triangleCount(); ++t) {
-      for (int k = 0; k < 3; ++k) {
-        const int v = mesh.tris[t].v[k];
-        aroundSpan_[fill[v]] = corners[t][k].span;
-        around_[fill[v]++] = t;
-      }
+  }
+  for (int v = 0; v < n; ++v) rowStart_[v + 1] += rowStart_[v];
+  around_.resize(rowStart_[n]);
+  aroundSpan_.resize(rowStart_[n]);
+  std::vector<int> fill(rowStart_.begin(), rowStart_.end() - 1);
+  for (int t = 0; t < mesh.triangleCount(); ++t) {
+    for (int k = 0; k < 3; ++k) {
+      const int v = mesh.tris[t].v[k];
+      aroundSpan_[fill[v]] = corners[t][k].span;
+      around_[fill[v]++] = t;
     }
-    onBorder_.assign(n, 0);
-    for (const Edge& edge : mesh.edges) {
-      if (edge.isBoundary()) onBorder_[edge.v[0]] = onBorder_[edge.v[1]] = 1;
-    }
-    rowsFor_ = topology;
-    rowsVertices_ = mesh.x.size();
-    rowsTriangles_ = mesh.tris.size();
   }
   walked_.assign(n, 0);
   bound_.assign(n, 0.0);
@@ -136,6 +122,10 @@ void TearSearch::screenAndLookAtAll(const ClothMesh& mesh, const std::vector<Tri
   // below 1 too.
   largestStress_.resize(stress.size());
   for (std::size_t t = 0; t < stress.size(); ++t) largestStress_[t] = spectralNorm(stress[t]);
+  onBorder_.assign(n, 0);
+  for (const Edge& edge : mesh.edges) {
+    if (edge.isBoundary()) onBorder_[edge.v[0]] = onBorder_[edge.v[1]] = 1;
+  }
   const double screen = (1.0 + 1e-9) / weakestStrength(*table_);
   for (int v = 0; v < n; ++v) {
     if (settings_.skipByBound && !onBorder_[v] && rowStart_[v] < rowStart_[v + 1]) {
@@ -155,7 +145,6 @@ void TearSearch::refresh(const ClothMesh& mesh, const std::vector<TriangleCorner
                          const std::vector<Mat2>& stress, const std::vector<int>& triangles,
                          const std::vector<int>& extraVertices, TearSearchCounts& counts) {
   const std::size_t n = static_cast<std::size_t>(mesh.vertexCount());
-  rowsFor_ = Topology{};  // a tear changed the rows: the next start finds them again
   triangleAt_.resize(n, kNone);
   bound_.resize(n, 0.0);
   best_.resize(n);

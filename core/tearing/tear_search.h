@@ -32,20 +32,12 @@ enum class CrackPlace { None, Tip, Lip };
 class TearSearch {
  public:
   std::size_t heapBytes() const;  // util/heap_bytes.h (defined in sim/world_memory.cpp)
-  // Every vertex looked at afresh (the start of a step). `topology` names the mesh's connectivity:
-  // while it equals the last start's (same cloth, no tear since), the triangles around each
-  // vertex and the border are kept from that start instead of found again.
-  struct Topology {
-    int cloth = -1;
-    long long tears = -1;  // the cloth's tears so far
-    bool operator==(const Topology&) const = default;
-  };
   // The cloth's painted strength (strength_map.h), or none; read by every later call, bounds
   // included. Set before start.
   void setStrengthMap(const TearStrengthMap* map) { map_ = map; }
+  // Every vertex looked at afresh (the start of a step).
   void start(const ClothMesh& mesh, const std::vector<TriangleCorners>& corners, const std::vector<Mat2>& stress,
-             const TearTable& table, double weftAngleRad, const TearSearchSettings& settings, Topology topology,
-             TearSearchCounts& counts);
+             const TearTable& table, double weftAngleRad, const TearSearchSettings& settings, TearSearchCounts& counts);
   // The vertices of these triangles (changed by a tear, or with a new stress), and `vertices`
   // (those whose fans a tear opened without changing a triangle), looked at again; new vertices
   // are added. `corners` and `stress` must already be up to date for them.
@@ -141,9 +133,6 @@ class TearSearch {
   StressFan fan_;                        // reused
   std::vector<double> largestStress_;    // per triangle, this step's screen (reused)
   std::vector<char> onBorder_;           // per vertex, at the start of the step
-  // What the rows above, triangleAt_ and onBorder_ were found for (with the mesh's sizes).
-  Topology rowsFor_;
-  std::size_t rowsVertices_ = 0, rowsTriangles_ = 0;
 };
 
 }  // namespace weft

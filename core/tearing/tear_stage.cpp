@@ -151,7 +151,6 @@ TopologyChange TearStage::tearCloth(Cloth& cloth, int clothIndex, double time, d
   if (corners.size() != cloth.mesh.tris.size()) corners = triangleCorners(cloth.mesh);
   if (overshoot_.size() != corners_.size()) overshoot_.resize(corners_.size());
   if (overloadedSince_.size() != corners_.size()) overloadedSince_.resize(corners_.size());
-  if (clothTears_.size() != corners_.size()) clothTears_.resize(corners_.size(), 0);
   const std::unordered_map<int, Incubating>& overloadedBefore = overloadedSince_[clothIndex];
   // The vertices overloaded this step: held while incubating, offered once mature, or found newly
   // above 1.
@@ -173,8 +172,7 @@ TopologyChange TearStage::tearCloth(Cloth& cloth, int clothIndex, double time, d
   {
     StageTimer timer(profile, "tear_search");
     search_.setStrengthMap(cloth.tearStrengthMap ? &*cloth.tearStrengthMap : nullptr);
-    search_.start(cloth.mesh, corners, stress_, table, cloth.weftAngleRad, searchSettings_,
-                  TearSearch::Topology{clothIndex, clothTears_[clothIndex]}, stats_.search);
+    search_.start(cloth.mesh, corners, stress_, table, cloth.weftAngleRad, searchSettings_, stats_.search);
     if (spec_.incubation > 0.0 && !incubated(Incubating{time - dt, 0.0}, time, dt)) {
       // Only vertices that have waited long enough are offered as crack starts; the others are
       // asked only whether they are (still) overloaded.
@@ -277,7 +275,6 @@ TopologyChange TearStage::tearCloth(Cloth& cloth, int clothIndex, double time, d
     nudgeCopiesApart(cloth.mesh, change);
     accumulateTopologyChange(changed, change);
     ++stats_.tears;
-    ++clothTears_[clothIndex];
     ++tears;
     if (starts) ++crackStarts;
     started.push_back(torn->restPosition);

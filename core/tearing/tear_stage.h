@@ -106,7 +106,6 @@ class TearStage {
   std::vector<std::unordered_map<int, Incubating>> overloadedSince_;  // per cloth
   std::vector<std::unordered_map<int, double>> overshoot_;  // per cloth: crack tip -> metres run past its
                                                             // last step's reach, owed to the next
-  std::vector<long long> clothTears_;  // per cloth: its tears so far (its topology's version)
   std::vector<TearRecord> log_;
   TearStats stats_;
 };
