@@ -9,6 +9,7 @@
 #include <memory>
 
 #include "editor/strength_painting.h"
+#include "scene/scene_json.h"
 #include "sim/world.h"
 #include "support/tear_scenes.h"
 #include "support/temp_dir.h"
@@ -112,6 +113,48 @@ TEST(StrengthPainting, TheSavedPngReadsBackAsTheSameMultipliers) {
   }
   EXPECT_LE(worst, (loaded.white - loaded.black) / 255.0);
   EXPECT_LT(strengthMultiplierAt(loaded, Vec2(0.25, 0.75)), 0.45);
+}
+
+// Saving beside the scene: the PNG under the scene's name and the cloth's, the scene pointing at
+// it, and the scene loaded again gives the painted multipliers (within one grey level).
+TEST(StrengthPainting, ASceneSavedWithItsPaintedMapLoadsTheSameMultipliers) {
+  test::TempDir dir;
+  const nlohmann::json scene = nlohmann::json::parse(
+      R"({"cloths": [{"name": "sheet", "mesh": {"grid": {}}, "material": "royal-target", "tear_table": {"strength": [1]}}]})");
+  const std::filesystem::path sceneFile = dir.write("shirt.json", scene.dump());
+  const Scene before = loadScene(sceneFile);
+  World world(before);
+  Vec2 lo, hi;
+  clothMaterialBounds(world.cloth(0), lo, hi);
+  const std::filesystem::path png = paintedMapFile(sceneFile, "sheet", "");
+  EXPECT_EQ(png, dir.path() / "shirt.sheet.strength.png");
+  StrengthPainting painting(newStrengthMap(lo, hi, png.filename().string()), nullptr);
+  StrengthBrush brush;
+  brush.multiplier = 0.3;
+  brush.radius = 0.08;
+  const Vec2 centre = 0.5 * (lo + hi);
+  painting.beginStroke();
+  painting.dab(centre, brush);
+  painting.endStroke();
+  painting.savePng(png);
+  dir.write("shirt.json", withStrengthMapImage(scene, 0, png.filename().string(), painting.map().black,
+                                               painting.map().white).dump());
+  const Scene after = loadScene(sceneFile);
+  ASSERT_TRUE(after.cloths[0].tearStrengthMap.has_value());
+  TearStrengthMap loaded = *after.cloths[0].tearStrengthMap;
+  prepareStrengthMap(loaded, lo, hi);  // as buildCloth does
+  double worst = 0.0;
+  for (double x = lo.x(); x <= hi.x(); x += 0.011) {
+    for (double y = lo.y(); y <= hi.y(); y += 0.013) {
+      worst = std::max(worst, std::abs(strengthMultiplierAt(loaded, Vec2(x, y)) - strengthMultiplierAt(painting.map(), Vec2(x, y))));
+    }
+  }
+  EXPECT_LE(worst, (loaded.white - loaded.black) / 255.0);
+  EXPECT_NEAR(strengthMultiplierAt(loaded, centre), 0.3, 0.02);
+  // Saved again, the cloth's own image beside the scene is the file written over.
+  EXPECT_EQ(paintedMapFile(sceneFile, "sheet", "shirt.sheet.strength.png"), png);
+  EXPECT_EQ(paintedMapFile(sceneFile, "sheet", "strength_maps/perforation.png"), png);
+  EXPECT_EQ(paintedMapFile(sceneFile, "sheet", "perforation.png"), png);  // not beside the scene: assets/'s
 }
 
 TEST(StrengthPainting, AHitMapsToMaterialSpaceThroughItsTrianglesRestCorners) {

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <system_error>
 
 #include "png_writer.h"
 #include "sim/world.h"
@@ -61,6 +62,27 @@ TearStrengthMap newStrengthMap(const Vec2& lo, const Vec2& hi, const std::string
   map.grey.assign(static_cast<std::size_t>(map.width) * map.height, 1.0f);
   prepareStrengthMap(map, lo, hi);
   return map;
+}
+
+std::filesystem::path paintedMapFile(const std::filesystem::path& sceneFile, const std::string& clothName,
+                                     const std::string& namedImage) {
+  const std::filesystem::path folder = sceneFile.parent_path();
+  const std::filesystem::path named(namedImage);
+  std::error_code ec;
+  if (!namedImage.empty() && named.is_relative() && !named.has_parent_path() &&
+      std::filesystem::is_regular_file(folder / named, ec)) {
+    return folder / named;
+  }
+  return folder / (sceneFile.stem().string() + "." + clothName + ".strength.png");
+}
+
+nlohmann::json withStrengthMapImage(const nlohmann::json& scene, int cloth, const std::string& image, double black,
+                                    double white) {
+  nlohmann::json next = scene;
+  nlohmann::json& spec = next.at("cloths").at(static_cast<std::size_t>(cloth));
+  if (!spec.contains("tear_strength_map")) spec["tear_strength_map"] = {{"black", black}, {"white", white}};
+  spec["tear_strength_map"]["image"] = image;
+  return next;
 }
 
 StrengthPainting::StrengthPainting(TearStrengthMap start, std::shared_ptr<EditClock> clock)

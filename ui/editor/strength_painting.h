@@ -17,6 +17,7 @@
 #include <filesystem>
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "editor/edit_history.h"
@@ -51,6 +52,17 @@ void clothMaterialBounds(const ClothMesh& mesh, Vec2& outLo, Vec2& outHi);
 // The map a cloth gets on its first stroke when it has none: white over [lo, hi] (its material
 // bounds) at about 4 mm a pixel (16 to 1024 pixels a side), black 0.05, white 1, named `image`.
 TearStrengthMap newStrengthMap(const Vec2& lo, const Vec2& hi, const std::string& image);
+
+// Where a cloth's painted map is saved: the image the cloth already names when that file lives
+// beside the scene (a bare file name found in the scene's folder), else a new file there,
+// "<scene stem>.<cloth name>.strength.png" (a shipped map in assets/ is never written over).
+std::filesystem::path paintedMapFile(const std::filesystem::path& sceneFile, const std::string& clothName,
+                                     const std::string& namedImage);
+
+// The scene's cloth `cloth` reading its tear strength map from `image` (relative to the scene's
+// folder); a cloth that had no map also gets the painted map's `black` and `white`.
+nlohmann::json withStrengthMapImage(const nlohmann::json& scene, int cloth, const std::string& image, double black,
+                                    double white);
 
 class StrengthPainting {
  public:
