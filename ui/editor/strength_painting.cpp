@@ -6,6 +6,7 @@
 #include <numbers>
 #include <system_error>
 
+#include "collision/closest_points.h"
 #include "png_writer.h"
 #include "sim/world.h"
 
@@ -30,15 +31,11 @@ double brushCoverage(double distance, double radius) {
 Vec2 materialPointOfHit(const World& world, const ClothHit& hit) {
   const ClothMesh& mesh = world.cloth(hit.cloth);
   const Triangle& t = mesh.tris[static_cast<std::size_t>(hit.triangle)];
-  const Vec3 a = mesh.x[t.v[0]], b = mesh.x[t.v[1]], c = mesh.x[t.v[2]];
-  // Barycentrics of the hit point (projected onto the triangle's plane) by the usual area ratios
-  // (Ericson, Real-Time Collision Detection, 3.4).
-  const Vec3 e0 = b - a, e1 = c - a, e2 = hit.point - a;
-  const double d00 = e0.dot(e0), d01 = e0.dot(e1), d11 = e1.dot(e1), d20 = e2.dot(e0), d21 = e2.dot(e1);
-  const double denom = d00 * d11 - d01 * d01;
-  if (!(std::abs(denom) > 0.0)) return t.rest[0];
-  const double v = (d11 * d20 - d01 * d21) / denom, w = (d00 * d21 - d01 * d20) / denom;
-  return (1.0 - v - w) * t.rest[0] + v * t.rest[1] + w * t.rest[2];
+  // The hit lies on the triangle; its closest point's weights are its barycentrics, and stay
+  // finite on a collapsed triangle (collision/closest_points.h).
+  const PointTriangleClosest closest = closestPointOnTriangle(hit.point, mesh.x[t.v[0]], mesh.x[t.v[1]], mesh.x[t.v[2]]);
+  const double* w = closest.weights;
+  return w[0] * t.rest[0] + w[1] * t.rest[1] + w[2] * t.rest[2];
 }
 
 void clothMaterialBounds(const ClothMesh& mesh, Vec2& outLo, Vec2& outHi) {
