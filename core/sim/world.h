@@ -20,11 +20,12 @@
 #include "rigid/sharp_tags.h"
 #include "scene/scene.h"
 #include "sim/stage_profile.h"
-#include "tearing/tear_stage.h"
+#include "tearing/tear_record.h"
 
 namespace weft {
 
 struct Obstacle;
+class TearStage;
 
 struct SolverStats {
   long long linearIterations = 0;   // total linear-solver iterations (CG) since the start

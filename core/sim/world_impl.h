@@ -8,6 +8,7 @@
 #include "integrate/integrator.h"
 #include "sim/cloth.h"
 #include "sim/world.h"
+#include "tearing/tear_stage.h"
 
 namespace weft {
 

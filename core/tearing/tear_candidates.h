@@ -16,6 +16,7 @@
 #include "mesh/cloth_mesh.h"
 #include "tearing/separation_strength.h"
 #include "tearing/strength_map.h"
+#include "tearing/tear_record.h"
 #include "tearing/tear_table.h"
 #include "util/types.h"
 
@@ -55,12 +56,6 @@ struct TearCandidate {
   double required = 0.0;    // R(alpha) (N/m)
   double alphaDeg = 0.0;    // angle from the warp direction V, Eq. 3.1-3.3, in [0, 180)
   double ratio = 0.0;       // omega = zeta / R (Eq. 3.4)
-};
-
-struct TearSearchCounts {
-  long long vertices = 0;       // vertices looked at
-  long long skipped = 0;        // of which skipped by the bound
-  long long linesEvaluated = 0;  // zeta evaluations
 };
 
 // alpha of a line at `angle` (rad, material space) from the warp direction V of a cloth whose weft

@@ -32,34 +32,13 @@
 #include "tearing/crack_relaxation.h"
 #include "tearing/nonlocal_stress.h"
 #include "tearing/tear_candidates.h"
+#include "tearing/tear_record.h"
 #include "tearing/tear_search.h"
 #include "util/types.h"
 
 namespace weft {
 
 struct Cloth;
-
-// One tear, as the tear log of metrics.json lists it.
-struct TearRecord {
-  double time = 0.0;        // s, end of the step that tore
-  int cloth = 0;
-  int vertex = kNone;       // the vertex the line went through (before the split)
-  Vec3 position = Vec3::Zero();  // world position of that vertex (m)
-  Vec2 restPosition = Vec2::Zero();  // its material-space position (m)
-  double angleDeg = 0.0;    // the line's direction in material space, degrees from material x
-  double alphaDeg = 0.0;    // from the warp direction V (Eq. 3.1-3.3)
-  bool ray = false;         // opened from a border or an earlier tear (one side only)
-  double separation = 0.0;  // zeta (N/m)
-  double required = 0.0;    // R(alpha) (N/m)
-  double ratio = 0.0;       // omega
-};
-
-struct TearStats {
-  long long tears = 0;
-  long long refused = 0;     // lines the mesh guards refused (the next line or vertex was tried)
-  long long stoppedBySpeed = 0;  // crack tips that could have run on but reached crack_speed * dt
-  TearSearchCounts search;
-};
 
 class TearStage {
  public:
@@ -85,7 +64,7 @@ class TearStage {
   // The vertices still incubating whose omega stays above 1 are kept in `now` and held from
   // starting a crack this step, at the cost of one line each where their load barely moved (not a
   // search of their whole fan, as offering them would cost).
-  void holdIncubating(const Cloth& cloth, const std::vector<TriangleCorners>& corners,
+  void holdIncubating(TearSearch& search, const Cloth& cloth, const std::vector<TriangleCorners>& corners,
                       const std::unordered_map<int, Incubating>& before, double time, double dt,
                       std::unordered_map<int, Incubating>& now);
 
@@ -97,7 +76,7 @@ class TearStage {
   std::vector<Mat2> stress_;       // what the search reads: localStress_, averaged when stress_length > 0
   std::vector<NonlocalStress> nonlocal_;  // per cloth: its neighbourhoods are its mesh's, patched after each tear
   std::vector<std::vector<TriangleCorners>> corners_;  // per cloth, patched after each tear
-  TearSearch search_;
+  std::vector<TearSearch> search_;  // per cloth: it keeps what the mesh alone decides from step to step
   // A vertex whose omega is above 1, waiting out the incubation before it may start a crack.
   struct Incubating {
     double since = 0.0;  // when its omega went above 1 (s); kept while it stays above 1
