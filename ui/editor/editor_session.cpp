@@ -274,8 +274,10 @@ void EditorSession::save() {
 void EditorSession::saveAs(const std::filesystem::path& file) {
   std::error_code ec;
   if (!file.parent_path().empty()) std::filesystem::create_directories(file.parent_path(), ec);  // else the save says why
-  saveStrengthMaps(file, true);  // every painted map beside the new file
   document_.saveAs(file);
+  // Every painted map beside the new file, the scene naming it (read from there: after the move).
+  saveStrengthMaps(file, true);
+  if (document_.dirty()) document_.save();
   status = "saved " + file.string();
 }
 
