@@ -111,6 +111,8 @@ void viewportMouse(editor::EditorSession& session, editor::EditorUi& ui, ui::Orb
   const bool overScene = !io.WantCaptureMouse && rect.contains(mouse.x + rect.x, mouse.y + rect.y);
   if (!overScene && !interaction.grabbing()) mouse.left = false;
   ui::MouseState forCamera = buttons;
+  // The Material panel's tear strength brush: a left drag on a cloth paints (tag mode first).
+  interaction.setPaintBrush(ui.panels.paintMode && !ui.panels.tagMode ? &ui.panels.brush : nullptr);
   const bool taken = interaction.update(session, camera, mouse, {io.KeyAlt, io.KeyShift}, rect.width, rect.height,
                                         ui.panels.tagMode ? ui.panels.tools.current() : nullptr);
   if (overScene && !taken) controls.update(camera, forCamera, win.height);
@@ -206,6 +208,18 @@ int runEditor(const EditorOptions& options) {
           tool.highlightVertices.push_back(hovered->vertex);
         } else {
           tool.highlightEdges.push_back(hovered->edge);
+        }
+      }
+      // Painting the tear strength: each cloth with a map drawn tinted by it (weak red, strong blue).
+      if (ui.panels.paintMode) {
+        editor::EditorSession& painted = workspace.session();
+        for (int c = 0; c < static_cast<int>(view.cloths.size()); ++c) {
+          const editor::StrengthPainting* painting = painted.findStrengthPainting(c);
+          if (painting == nullptr && c < static_cast<int>(painted.scene().cloths.size()) &&
+              painted.scene().cloths[static_cast<std::size_t>(c)].tearStrengthMap) {
+            painting = &painted.strengthPainting(c);  // the map the scene loads, shown before a stroke
+          }
+          if (painting != nullptr) view.cloths[static_cast<std::size_t>(c)].strengthTint = std::make_shared<const TearStrengthMap>(painting->map());
         }
       }
       editor::drawSceneViewport(renderer, view, camera, viewportRect(), size.width, size.height);

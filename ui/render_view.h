@@ -3,6 +3,7 @@
 // meshes with their weft angle and tint, the obstacles at their current pose with their sharp
 // tags, and the ground. Plain data, no GL.
 #include <array>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -26,6 +27,9 @@ struct ClothView {
   int threadsPerBand = 8;      // gingham: threads of one colour before the check changes colour
   bool woven = true;           // false: one flat colour (the tint), no threads: the user study's texture-hidden clips
   std::vector<Vec3> pinTravel; // m: every offset a pin script moves pinned vertices by (for framing)
+  // The editor's tear strength brush: this painted map drawn over the cloth, weak red, strong
+  // blue (none: not shown).
+  std::shared_ptr<const TearStrengthMap> strengthTint;
 };
 
 struct ObstacleView {

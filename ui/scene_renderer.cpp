@@ -2,7 +2,10 @@
 
 #include <GL/glcorearb.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdint>
 #include <vector>
 
 #include <Eigen/Geometry>
@@ -41,6 +44,10 @@ uniform float uPitch;       // thread pitch (m)
 uniform vec2 uWeft;         // weft direction in material space (cos, sin)
 uniform float uBand;        // threads per yarn-dyed colour band
 uniform int uPattern;       // 0 gingham, 1 plain, 2 flat (no threads: one colour)
+uniform int uTinted;        // 1: the tear strength map below is drawn over the cloth
+uniform sampler2D uStrength; // RGB the map's colour, A how much of it
+uniform vec2 uStrengthLo;   // the map's material-space rectangle (m)
+uniform vec2 uStrengthHi;
 out vec4 outColour;
 
 // Brightness across a thread: a rounded yarn, darker at its sides.
@@ -91,6 +98,13 @@ void main() {
   float light = 0.35 + diffuse;
   vec3 base = uMode == 0 ? woven(vRest) : (uMode == 1 ? vec3(0.62, 0.63, 0.65) : ground(vPosition));
   if (uMode == 2) light = 1.0;
+  if (uMode == 0 && uTinted == 1) {
+    // Column 0 at the smallest x, row 0 (texture t = 0) at the largest y (strength_map.h).
+    vec2 st = vec2((vRest.x - uStrengthLo.x) / (uStrengthHi.x - uStrengthLo.x),
+                   (uStrengthHi.y - vRest.y) / (uStrengthHi.y - uStrengthLo.y));
+    vec4 tint = texture(uStrength, st);
+    base = mix(base, tint.rgb, tint.a);
+  }
   outColour = vec4(base * light, 1.0);
 }
 )";
@@ -125,14 +139,16 @@ void put3(float* out, const Vec3& v) {
 struct SceneRenderer::Gl {
   GlProgram surface{"surface", kSurfaceVertex, kSurfaceFragment};
   GlProgram flat{"flat", kFlatVertex, kFlatFragment};
-  GLuint vao = 0, surfaceBuffer = 0, lineBuffer = 0;
+  GLuint vao = 0, surfaceBuffer = 0, lineBuffer = 0, strengthTexture = 0;
 
   Gl() {
     glGenVertexArrays(1, &vao);
     glGenBuffers(1, &surfaceBuffer);
     glGenBuffers(1, &lineBuffer);
+    glGenTextures(1, &strengthTexture);
   }
   ~Gl() {
+    glDeleteTextures(1, &strengthTexture);
     glDeleteBuffers(1, &surfaceBuffer);
     glDeleteBuffers(1, &lineBuffer);
     glDeleteVertexArrays(1, &vao);
@@ -169,6 +185,37 @@ struct SceneRenderer::Gl {
     glDrawArrays(primitive, 0, static_cast<GLsizei>(positions.size() / 3));
   }
 };
+
+namespace {
+
+// A tear strength multiplier as a colour over the cloth: below 1 towards red, above 1 towards
+// blue, by how far it is from 1 on a log scale (0.25 or 4: fully), a neutral 1 not at all.
+std::array<std::uint8_t, 4> strengthColour(double multiplier) {
+  const double s = std::clamp(std::log(std::max(multiplier, 1e-6)) / std::log(4.0), -1.0, 1.0);
+  const double a = 0.15 + 0.75 * std::abs(s);  // a faint wash where it is neutral: the map is on
+  if (s < 0) return {230, 20, 20, static_cast<std::uint8_t>(std::lround(255 * a))};
+  if (s > 0) return {25, 70, 230, static_cast<std::uint8_t>(std::lround(255 * a))};
+  return {255, 255, 255, static_cast<std::uint8_t>(std::lround(255 * a))};
+}
+
+// The map's multipliers as an RGBA texture, row 0 first, bound to texture unit 0.
+void uploadStrengthTexture(GLuint texture, const TearStrengthMap& map) {
+  std::vector<std::uint8_t> rgba(static_cast<std::size_t>(map.width) * map.height * 4);
+  for (std::size_t i = 0; i < map.multiplier.size() && 4 * i + 3 < rgba.size(); ++i) {
+    const auto c = strengthColour(map.multiplier[i]);
+    std::copy(c.begin(), c.end(), rgba.begin() + static_cast<std::ptrdiff_t>(4 * i));
+  }
+  glActiveTexture(GL_TEXTURE0);
+  glBindTexture(GL_TEXTURE_2D, texture);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, map.width, map.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+}
+
+}  // namespace
 
 SceneRenderer::SceneRenderer(const RenderSettings& settings) : settings_(settings), gl_(std::make_unique<Gl>()) {}
 
@@ -277,8 +324,19 @@ void SceneRenderer::draw(const RenderView& view, const OrbitCamera& camera, int 
     glUniform1i(gl.surface.uniform("uPattern"), !cloth.woven ? 2 : cloth.pattern == WeavePattern::Plain ? 1 : 0);
     glUniform2f(gl.surface.uniform("uWeft"), static_cast<float>(std::cos(cloth.weftAngleRad)),
                 static_cast<float>(std::sin(cloth.weftAngleRad)));
+    const TearStrengthMap* tint = cloth.strengthTint.get();
+    const bool tinted = tint != nullptr && tint->width > 0 && tint->height > 0 &&
+                        tint->multiplier.size() == static_cast<std::size_t>(tint->width) * tint->height;
+    glUniform1i(gl.surface.uniform("uTinted"), tinted ? 1 : 0);
+    if (tinted) {
+      uploadStrengthTexture(gl.strengthTexture, *tint);
+      glUniform1i(gl.surface.uniform("uStrength"), 0);
+      glUniform2f(gl.surface.uniform("uStrengthLo"), static_cast<float>(tint->lo.x()), static_cast<float>(tint->lo.y()));
+      glUniform2f(gl.surface.uniform("uStrengthHi"), static_cast<float>(tint->hi.x()), static_cast<float>(tint->hi.y()));
+    }
     gl.drawSurface(clothVertices(*cloth.mesh));
   }
+  glUniform1i(gl.surface.uniform("uTinted"), 0);
   glDisable(GL_POLYGON_OFFSET_FILL);
 
   // Edges on top: torn red, cut green; sharp obstacle edges and vertices red.

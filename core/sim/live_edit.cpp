@@ -56,6 +56,7 @@ Scene withoutLiveEdits(const Scene& running, Scene edited, const World* world = 
     cloth.material = was.material;
     cloth.weftAngleDeg = was.weftAngleDeg;
     cloth.appearance = was.appearance;
+    cloth.tearStrengthMap = was.tearStrengthMap;
   }
   return edited;
 }
@@ -78,6 +79,7 @@ void applyLiveEdits(World& world, const Scene& edited) {
     if (!(cloth.material == was.material)) world.setClothMaterial(c, cloth.material);
     if (cloth.weftAngleDeg != was.weftAngleDeg) world.setClothWeftAngle(c, cloth.weftAngleDeg);
     if (!(cloth.appearance == was.appearance)) world.setClothAppearance(c, cloth.appearance);
+    if (!(cloth.tearStrengthMap == was.tearStrengthMap)) world.setClothTearStrengthMap(c, cloth.tearStrengthMap);
     if (cloth.name != was.name || cloth.materialName != was.materialName)
       world.setClothLabels(c, cloth.name, cloth.materialName);
   }

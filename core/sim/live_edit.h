@@ -3,7 +3,7 @@
 // velocities, tears) and which need the World rebuilt from the edited scene.
 //
 // Live (World's setters, world.h): per cloth its material (elasticity, bending, density, tear
-// table), weft angle, appearance, name and material name; the forces; the solver (dt, substeps and
+// table), painted tear strength map, weft angle, appearance, name and material name; the forces; the solver (dt, substeps and
 // threads as they are, any other solver setting with fresh integrators); the output (frames, fps,
 // camera); the scene's name and description; an obstacle's sharp-tags source when it holds the
 // tags the running world already has (needsReset with the world, below).

@@ -82,6 +82,10 @@ class World {
   void setClothWeftAngle(int cloth, double degrees);  // membrane elements and hinges are rebuilt
   void setClothAppearance(int cloth, const ClothAppearance& appearance);  // no simulation effect
   void setClothLabels(int cloth, const std::string& name, const std::string& materialName);
+  // The cloth's painted tear strength (tearing/strength_map.h; none: the table alone), prepared over
+  // the cloth's material bounds unless its extent is explicit; read by the tearing stage from the
+  // next step on (the editor's tear strength brush).
+  void setClothTearStrengthMap(int cloth, const std::optional<TearStrengthMap>& map);
   void setForces(const ForcesSpec& forces);  // read afresh every step
   // dt, substeps and threads are read every step (time() continues from where it is); any other
   // change (integrator kind, linear solver, preconditioner, tolerances, iteration bounds) builds

@@ -1,5 +1,6 @@
 // Live edits of a running World (world.h): each keeps positions, velocities and the torn topology,
 // refreshes what was derived from the edited value, and records the value in the World's scene.
+#include <limits>
 #include <stdexcept>
 
 #include "sim/world_impl.h"
@@ -57,6 +58,24 @@ void World::setClothLabels(int index, const std::string& name, const std::string
   clothAt(impl_->cloths, index).name = name;
   impl_->scene.cloths[index].name = name;
   impl_->scene.cloths[index].materialName = materialName;
+}
+
+void World::setClothTearStrengthMap(int index, const std::optional<TearStrengthMap>& map) {
+  Impl& w = *impl_;
+  Cloth& cloth = clothAt(w.cloths, index);
+  cloth.tearStrengthMap = map;
+  if (cloth.tearStrengthMap) {
+    // Over the material bounding box, as buildCloth places it (tears keep every rest corner).
+    Vec2 lo = Vec2::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+    for (const Triangle& t : cloth.mesh.tris) {
+      for (const Vec2& p : t.rest) {
+        lo = lo.cwiseMin(p);
+        hi = hi.cwiseMax(p);
+      }
+    }
+    prepareStrengthMap(*cloth.tearStrengthMap, lo, hi);
+  }
+  w.scene.cloths[index].tearStrengthMap = map;
 }
 
 void World::setForces(const ForcesSpec& forces) { impl_->scene.forces = forces; }

@@ -147,7 +147,17 @@ fs::path Autosave::fileFor(const fs::path& original) const {
 }
 
 void Autosave::write(const JsonDocument& doc, const std::vector<UnsavedToolTags>& toolTags) {
-  if (!doc.dirty() && toolTags.empty()) {
+  write(doc, doc.json(), doc.dirty(), toolTags);
+}
+
+fs::path Autosave::strengthMapFile(const fs::path& original, const std::string& cloth) const {
+  std::string name = fileFor(original).filename().string();
+  name.resize(name.size() - std::string(kSuffix).size());
+  return dir_ / (name + "." + cloth + ".strength.png");
+}
+
+void Autosave::write(const JsonDocument& doc, const json& kept, bool unsaved, const std::vector<UnsavedToolTags>& toolTags) {
+  if (!unsaved && toolTags.empty()) {
     discard(doc.file());
     return;
   }
@@ -157,7 +167,7 @@ void Autosave::write(const JsonDocument& doc, const std::vector<UnsavedToolTags>
   json record = {{"weftAutosave", kFormatVersion},
                        {"original", absoluteOf(doc.file()).string()},
                        {"savedAt", utcNow()},
-                       {"document", doc.json()},
+                       {"document", kept},
                        {"toolTags", json::array()}};
   for (const UnsavedToolTags& tags : toolTags) {
     record["toolTags"].push_back({{"obstacle", tags.obstacle},
@@ -196,6 +206,17 @@ std::vector<Recovery> Autosave::all() const {
 void Autosave::discard(const fs::path& original) {
   std::error_code ignored;
   fs::remove(fileFor(original), ignored);
+  // Its painted strength maps (strengthMapFile) go with it.
+  std::string prefix = fileFor(original).filename().string();
+  prefix.resize(prefix.size() - std::string(kSuffix).size());
+  prefix += ".";
+  std::vector<fs::path> maps;
+  std::error_code ec;
+  for (fs::directory_iterator it(dir_, ec), end; !ec && it != end; it.increment(ec)) {
+    const std::string name = it->path().filename().string();
+    if (name.starts_with(prefix) && name.ends_with(".strength.png")) maps.push_back(it->path());
+  }
+  for (const fs::path& map : maps) fs::remove(map, ignored);
 }
 
 }  // namespace weft::editor

@@ -55,6 +55,14 @@ class Autosave {
   // earlier autosave of it is removed instead (edits undone back to the saved state are not
   // offered again). Throws std::runtime_error naming the file when the write fails.
   void write(const JsonDocument& doc, const std::vector<UnsavedToolTags>& toolTags = {});
+  // The same with the JSON to keep given apart from the document (the editor's, its unsaved
+  // painted strength maps pointing at their PNGs in this folder, strengthMapFile), unsaved when
+  // `unsaved`.
+  void write(const JsonDocument& doc, const nlohmann::json& json, bool unsaved,
+             const std::vector<UnsavedToolTags>& toolTags = {});
+  // Where the autosave of `original` keeps cloth `cloth`'s unsaved painted tear strength map:
+  // beside its autosave file, "<its name>.CLOTH.strength.png" (discard() removes it with it).
+  std::filesystem::path strengthMapFile(const std::filesystem::path& original, const std::string& cloth) const;
 
   // The autosave of `original` (empty: the untitled one) when its document differs from the file on
   // disk (a missing or unreadable file counts as different), or a tool's tags differ from their

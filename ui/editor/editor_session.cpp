@@ -73,7 +73,8 @@ void EditorSession::redo() {
 
 // Every state in the history parsed when it was committed, so parsing it again cannot fail.
 void EditorSession::applyDocument(const std::string& label) {
-  Scene edited = parse(document_.json(), document_.file());
+  Scene parsed = parse(document_.json(), document_.file());
+  Scene edited = withPaintedMaps(parsed);  // what the brush painted stays, whatever the file names
   // A tool's tags saved into the file the scene now names (sharp_tag_edits.h) change only where
   // the tags come from: live when the world's tool already has them (the tags files are read then,
   // so only for an edit the scene alone would reset for).
@@ -89,7 +90,7 @@ void EditorSession::applyDocument(const std::string& label) {
     resetPending_ = false;
     status = label + ": applied live";
   }
-  scene_ = std::move(edited);
+  scene_ = std::move(parsed);
 }
 
 void EditorSession::reset() {
@@ -98,14 +99,15 @@ void EditorSession::reset() {
 }
 
 void EditorSession::rebuildWorld() {
-  auto world = std::make_unique<World>(scene_);
+  const Scene painted = withPaintedMaps(scene_);
+  auto world = std::make_unique<World>(painted);
   if (worker_) {
     collectSteps();
     worker_->attach(std::move(world));
   } else {
     worker_ = std::make_unique<StepWorker>(std::move(world));
   }
-  liveScene_ = scene_;
+  liveScene_ = painted;
   frameSteps_ = std::max<long long>(weft::stepsPerFrame(scene_), 1);
   frames_.clear();
   frames_.add(0, worker_->snapshot(), worker_->copyWhenIdle());
@@ -264,6 +266,7 @@ void EditorSession::save() {
     throw std::runtime_error(document_.file().filename().string() +
                              " is a scene shipped with Weft, used by everyone: Save as... to keep your version elsewhere");
   }
+  saveStrengthMaps(document_.file(), false);  // the painted maps beside it, the scene naming them
   document_.save();
   status = "saved " + document_.file().string();
 }
@@ -272,6 +275,9 @@ void EditorSession::saveAs(const std::filesystem::path& file) {
   std::error_code ec;
   if (!file.parent_path().empty()) std::filesystem::create_directories(file.parent_path(), ec);  // else the save says why
   document_.saveAs(file);
+  // Every painted map beside the new file, the scene naming it (read from there: after the move).
+  saveStrengthMaps(file, true);
+  if (document_.dirty()) document_.save();
   status = "saved " + file.string();
 }
 

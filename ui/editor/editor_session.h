@@ -11,6 +11,7 @@
 // code (and tests) that read the world itself see every step they asked for.
 #include <filesystem>
 #include <functional>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -23,6 +24,7 @@
 #include "editor/json_document.h"
 #include "editor/playback_meter.h"
 #include "editor/step_worker.h"
+#include "editor/strength_painting.h"
 #include "editor/world_snapshot.h"
 #include "scene/scene.h"
 #include "sim/world.h"
@@ -133,13 +135,29 @@ class EditorSession {
   void save();
   void saveAs(const std::filesystem::path& file);  // creates the folder when missing
   bool savesIntoInstalledData() const;             // a plain save() would write a shipped scene
-  bool dirty() const { return document_.dirty(); }
+  bool dirty() const { return document_.dirty() || !unsavedStrengthMaps().empty(); }
 
-  // Writes the autosave when there are unsaved edits, the scene's or its tools' sharp tags (the
+  // Writes the autosave when there are unsaved edits, the scene's, its tools' sharp tags or its
+  // painted strength maps (those as PNGs beside the autosave, which the autosaved scene names; the
   // editor calls it every few seconds).
-  void autosave(Autosave& store, const std::vector<UnsavedToolTags>& toolTags = {}) const {
-    store.write(document_, toolTags);
-  }
+  void autosave(Autosave& store, const std::vector<UnsavedToolTags>& toolTags = {}) const;
+
+  // --- The tear strength brush (strength_painting.h; these are in session_strength_maps.cpp) ---
+  // Cloth `cloth`'s painting, made on first use from the map the document gives it (or a new
+  // white one, newStrengthMap), its strokes undo steps on the scene's edit clock. Once a stroke
+  // ends (strengthPaintingChanged) its map replaces the document's in the running world, and keeps
+  // doing so through later edits, their undo, resets and rewinds of the timeline.
+  StrengthPainting& strengthPainting(int cloth);
+  StrengthPainting* findStrengthPainting(int cloth);  // none: not painted since the scene opened
+  const StrengthPainting* findStrengthPainting(int cloth) const;
+  std::vector<int> paintedCloths() const;
+  // The cloth's painting changed (a stroke ended, one undone or redone): the world takes its map
+  // between steps.
+  void strengthPaintingChanged(int cloth);
+  void undoStrengthPainting(int cloth);  // its latest stroke back (shared_undo.h decides when)
+  void redoStrengthPainting(int cloth);
+  // The names of the cloths whose painted map is not saved (those save() writes).
+  std::vector<std::string> unsavedStrengthMaps() const;
 
   std::string status;  // the last message for the status bar: what was applied, refused or needs a reset
   // The last refused edit, until the next edit; none after an accepted one.
@@ -150,6 +168,10 @@ class EditorSession {
   void rebuildWorld();
   void collectSteps();  // the finished batch's step times and non-finite stop
   void countChangeLog();  // the worker's change log, into the timeline's budget
+  Scene withPaintedMaps(Scene scene) const;  // each painted cloth's map in place of the document's
+  // Writes the painted maps beside `sceneFile` (all, or only the unsaved ones) and points the
+  // document at them (a scene edit).
+  void saveStrengthMaps(const std::filesystem::path& sceneFile, bool all);
 
   JsonDocument document_;
   Scene scene_;
@@ -169,6 +191,7 @@ class EditorSession {
   double pendingSteps_ = 0.0;  // the fraction of a step owed at slow speeds
   double meteredTime_ = 0.0;      // simulated time the meter has counted up to
   PlaybackMeter meter_;
+  std::map<int, std::unique_ptr<StrengthPainting>> paintings_;  // by cloth index
 };
 
 }  // namespace weft::editor

@@ -129,7 +129,9 @@ void EditorWorkspace::recoverToolTags(const Recovery& recovery, ToolTagEditors& 
 void EditorWorkspace::writeAutosave(const ToolTagEditors& tools) {
   const std::vector<UnsavedToolTags> toolTags = tools.unsavedTags();
   // Tags are the user's own edits from the first one (none exists before the first frame).
-  if (!recovered_ && session_->document().history().revision() == startRevision_ && toolTags.empty()) return;
+  if (!recovered_ && session_->document().history().revision() == startRevision_ && toolTags.empty() &&
+      session_->unsavedStrengthMaps().empty())
+    return;
   if (!session_->dirty() && toolTags.empty()) return;
   session_->autosave(autosave_, toolTags);
   wroteAutosaveOf_ = session_->document().file();

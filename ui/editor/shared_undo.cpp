@@ -57,13 +57,61 @@ bool anyCanRedo(const EditorSession& session, const std::vector<Tool*>& tools) {
   return false;
 }
 
+// The cloth whose painted tear strength (EditorSession::strengthPainting) holds the step to undo:
+// committed after `tick` (the latest of the scene's and the tools'), latest of all; -1: none.
+int paintingToUndo(const EditorSession& session, std::uint64_t tick) {
+  int latest = -1;
+  for (int cloth : session.paintedCloths()) {
+    const EditHistory& history = session.findStrengthPainting(cloth)->history();
+    if (history.canUndo() && history.undoTick() > tick) {
+      latest = cloth;
+      tick = history.undoTick();
+    }
+  }
+  return latest;
+}
+
+int paintingToRedo(const EditorSession& session, std::uint64_t tick) {
+  int latest = -1;
+  for (int cloth : session.paintedCloths()) {
+    const EditHistory& history = session.findStrengthPainting(cloth)->history();
+    if (history.canRedo() && history.redoTick() > tick) {
+      latest = cloth;
+      tick = history.redoTick();
+    }
+  }
+  return latest;
+}
+
+bool anyPaintingCanUndo(const EditorSession& session) { return paintingToUndo(session, 0) >= 0; }
+bool anyPaintingCanRedo(const EditorSession& session) { return paintingToRedo(session, 0) >= 0; }
+
+template <typename Tool>
+std::uint64_t latestUndoTick(const EditorSession& session, Tool* tool) {
+  return tool ? tool->document().history().undoTick() : sceneHistory(session).undoTick();
+}
+
+template <typename Tool>
+std::uint64_t latestRedoTick(const EditorSession& session, Tool* tool) {
+  return tool ? tool->document().history().redoTick() : sceneHistory(session).redoTick();
+}
+
+std::string clothName(const EditorSession& session, int cloth) {
+  return cloth < static_cast<int>(session.scene().cloths.size()) ? session.scene().cloths[static_cast<std::size_t>(cloth)].name
+                                                                 : std::to_string(cloth);
+}
+
 std::string undoLabel(const EditorSession& session, const std::vector<const ToolTagEditor*>& tools) {
   const ToolTagEditor* tool = toolToUndo(session, tools);
+  if (const int cloth = paintingToUndo(session, latestUndoTick(session, tool)); cloth >= 0)
+    return session.findStrengthPainting(cloth)->history().undoLabel() + " on " + clothName(session, cloth);
   return tool ? tool->document().history().undoLabel() + " on " + tool->name() : sceneHistory(session).undoLabel();
 }
 
 std::string redoLabel(const EditorSession& session, const std::vector<const ToolTagEditor*>& tools) {
   const ToolTagEditor* tool = toolToRedo(session, tools);
+  if (const int cloth = paintingToRedo(session, latestRedoTick(session, tool)); cloth >= 0)
+    return session.findStrengthPainting(cloth)->history().redoLabel() + " on " + clothName(session, cloth);
   return tool ? tool->document().history().redoLabel() + " on " + tool->name() : sceneHistory(session).redoLabel();
 }
 
@@ -77,8 +125,12 @@ std::vector<ToolTagEditor*> oneTool(ToolTagEditor* tool) {
 
 }  // namespace
 
-bool canUndoLatest(const EditorSession& session, const ToolTagEditors& tools) { return anyCanUndo(session, tools.editors()); }
-bool canRedoLatest(const EditorSession& session, const ToolTagEditors& tools) { return anyCanRedo(session, tools.editors()); }
+bool canUndoLatest(const EditorSession& session, const ToolTagEditors& tools) {
+  return anyCanUndo(session, tools.editors()) || anyPaintingCanUndo(session);
+}
+bool canRedoLatest(const EditorSession& session, const ToolTagEditors& tools) {
+  return anyCanRedo(session, tools.editors()) || anyPaintingCanRedo(session);
+}
 std::string latestUndoLabel(const EditorSession& session, const ToolTagEditors& tools) {
   return undoLabel(session, tools.editors());
 }
@@ -87,7 +139,10 @@ std::string latestRedoLabel(const EditorSession& session, const ToolTagEditors& 
 }
 
 void undoLatest(EditorSession& session, ToolTagEditors& tools) {
-  if (ToolTagEditor* tool = toolToUndo(session, tools.editors())) {
+  ToolTagEditor* tool = toolToUndo(session, tools.editors());
+  if (const int cloth = paintingToUndo(session, latestUndoTick(session, tool)); cloth >= 0) {
+    session.undoStrengthPainting(cloth);
+  } else if (tool) {
     tools.select(session, tool->obstacle());  // kept already: shows it in the Tools panel
     tool->undo(session);
   } else {
@@ -97,7 +152,10 @@ void undoLatest(EditorSession& session, ToolTagEditors& tools) {
 }
 
 void redoLatest(EditorSession& session, ToolTagEditors& tools) {
-  if (ToolTagEditor* tool = toolToRedo(session, tools.editors())) {
+  ToolTagEditor* tool = toolToRedo(session, tools.editors());
+  if (const int cloth = paintingToRedo(session, latestRedoTick(session, tool)); cloth >= 0) {
+    session.redoStrengthPainting(cloth);
+  } else if (tool) {
     tools.select(session, tool->obstacle());
     tool->redo(session);
   } else {
@@ -106,8 +164,12 @@ void redoLatest(EditorSession& session, ToolTagEditors& tools) {
   }
 }
 
-bool canUndoLatest(const EditorSession& session, const ToolTagEditor* tool) { return anyCanUndo(session, oneTool(tool)); }
-bool canRedoLatest(const EditorSession& session, const ToolTagEditor* tool) { return anyCanRedo(session, oneTool(tool)); }
+bool canUndoLatest(const EditorSession& session, const ToolTagEditor* tool) {
+  return anyCanUndo(session, oneTool(tool)) || anyPaintingCanUndo(session);
+}
+bool canRedoLatest(const EditorSession& session, const ToolTagEditor* tool) {
+  return anyCanRedo(session, oneTool(tool)) || anyPaintingCanRedo(session);
+}
 std::string latestUndoLabel(const EditorSession& session, const ToolTagEditor* tool) {
   return undoLabel(session, oneTool(tool));
 }
@@ -116,7 +178,10 @@ std::string latestRedoLabel(const EditorSession& session, const ToolTagEditor* t
 }
 
 void undoLatest(EditorSession& session, ToolTagEditor* tool) {
-  if (ToolTagEditor* latest = toolToUndo(session, oneTool(tool))) {
+  ToolTagEditor* latest = toolToUndo(session, oneTool(tool));
+  if (const int cloth = paintingToUndo(session, latestUndoTick(session, latest)); cloth >= 0) {
+    session.undoStrengthPainting(cloth);
+  } else if (latest) {
     latest->undo(session);
   } else {
     session.undo();
@@ -124,7 +189,10 @@ void undoLatest(EditorSession& session, ToolTagEditor* tool) {
 }
 
 void redoLatest(EditorSession& session, ToolTagEditor* tool) {
-  if (ToolTagEditor* latest = toolToRedo(session, oneTool(tool))) {
+  ToolTagEditor* latest = toolToRedo(session, oneTool(tool));
+  if (const int cloth = paintingToRedo(session, latestRedoTick(session, latest)); cloth >= 0) {
+    session.redoStrengthPainting(cloth);
+  } else if (latest) {
     latest->redo(session);
   } else {
     session.redo();

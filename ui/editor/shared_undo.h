@@ -16,8 +16,9 @@
 
 namespace weft::editor {
 
-// The editor's history: the scene's and every kept tool's tags (ToolTagEditor joins the session's
-// clock when it is made). A tool's step is labelled with the tool's name ("toggle sharp vertex 3
+// The editor's history: the scene's, every kept tool's tags (ToolTagEditor joins the session's
+// clock when it is made) and every cloth's painted tear strength (EditorSession::strengthPainting,
+// a stroke a step, labelled "paint tear strength on CLOTH"). A tool's step is labelled with the tool's name ("toggle sharp vertex 3
 // on sword"), and undoing or redoing it makes that tool the current one, so the Tools panel and
 // the viewport show what changed.
 bool canUndoLatest(const EditorSession& session, const ToolTagEditors& tools);

@@ -1,5 +1,6 @@
 #include "viewport_interaction.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <utility>
@@ -37,6 +38,7 @@ bool ViewportInteraction::update(EditorSession& session, const ui::OrbitCamera& 
   // the live world (an edit, Play or the end of the timeline goes back to it).
   if (session.shownFrame()) {
     hovered_.reset();
+    if (mode_ == Mode::Paint) session.strengthPainting(paintCloth_).endStroke();
     mode_ = Mode::Idle;
     return false;
   }
@@ -55,6 +57,17 @@ bool ViewportInteraction::update(EditorSession& session, const ui::OrbitCamera& 
     // step), so the click lands on what was drawn, and is never lost.
     const World& world = session.worldBetweenSteps();
     mode_ = Mode::Orbit;  // unless the press lands on something below
+    if (paintBrush_ != nullptr) {
+      if (auto hit = pickCloth(world, origin, dir)) {
+        mode_ = Mode::Paint;
+        paintCloth_ = hit->cloth;
+        lastDab_ = materialPointOfHit(world, *hit);
+        StrengthPainting& painting = session.strengthPainting(paintCloth_);
+        painting.beginStroke();
+        painting.dab(lastDab_, *paintBrush_);
+        return true;
+      }
+    }
     if (tags != nullptr && keys.shift) {
       mode_ = Mode::Box;
       box_ = DragBox{mouse.x, mouse.y, mouse.x, mouse.y};
@@ -106,6 +119,20 @@ bool ViewportInteraction::update(EditorSession& session, const ui::OrbitCamera& 
     return true;
   }
 
+  if (mode_ == Mode::Paint) {
+    if (released || paintBrush_ == nullptr) {
+      mode_ = Mode::Idle;
+      session.strengthPainting(paintCloth_).endStroke();
+      session.strengthPaintingChanged(paintCloth_);  // the running world tears by the new map
+      session.status = "painted the tear strength of " + session.scene().cloths[static_cast<std::size_t>(paintCloth_)].name +
+                       " (Ctrl+Z takes the stroke back)";
+      return true;
+    }
+    const World& world = session.worldBetweenSteps();
+    if (auto hit = pickCloth(world, origin, dir); hit && hit->cloth == paintCloth_) paintTo(session, materialPointOfHit(world, *hit));
+    return true;
+  }
+
   if (released) {
     if (mode_ == Mode::Grab) session.applyToWorld([](World& world) { world.releaseGrab(); });
     const bool taken = mode_ == Mode::Grab || mode_ == Mode::DragTool;
@@ -125,6 +152,15 @@ bool ViewportInteraction::update(EditorSession& session, const ui::OrbitCamera& 
     return true;
   }
   return false;
+}
+
+void ViewportInteraction::paintTo(EditorSession& session, const Vec2& to) {
+  StrengthPainting& painting = session.strengthPainting(paintCloth_);
+  const double spacing = std::max(0.25 * paintBrush_->radius, 1e-4);
+  const Vec2 step = to - lastDab_;
+  const int dabs = std::min(static_cast<int>(std::ceil(step.norm() / spacing)), 1000);
+  for (int k = 1; k <= dabs; ++k) painting.dab(lastDab_ + (static_cast<double>(k) / dabs) * step, *paintBrush_);
+  lastDab_ = to;
 }
 
 void ViewportInteraction::throwBall(EditorSession& session, const ui::OrbitCamera& camera, double x, double y, int width,

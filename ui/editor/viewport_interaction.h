@@ -7,11 +7,14 @@
 // Left press on a cloth grabs its nearest vertex; on a kinematic tool with Alt held, drags the
 // tool; in tag mode, toggles the tool's feature under the cursor (tag_picking.h: the one
 // highlighted before the click, an edge when the cursor is on its segment). A press on nothing
-// leaves the mouse to the orbit camera.
+// leaves the mouse to the orbit camera. With a tear strength brush set (setPaintBrush), a left
+// drag that starts on a cloth paints that cloth's strength instead of grabbing it (one stroke, one
+// undo step); a press on nothing still orbits.
 #include <optional>
 
 #include "editor/editor_session.h"
 #include "editor/sharp_tag_edits.h"
+#include "editor/strength_painting.h"
 #include "editor/tag_picking.h"
 #include "orbit_camera.h"
 #include "window_input.h"
@@ -50,14 +53,19 @@ class ViewportInteraction {
   // Throws a ball from the eye through the point (x, y) of the viewport.
   void throwBall(EditorSession& session, const ui::OrbitCamera& camera, double x, double y, int width, int height) const;
 
-  bool grabbing() const { return mode_ == Mode::Grab; }
+  bool grabbing() const { return mode_ == Mode::Grab || mode_ == Mode::Paint; }
+  // The brush a left drag on a cloth paints with (not owned; none: the drag grabs).
+  void setPaintBrush(const StrengthBrush* brush) { paintBrush_ = brush; }
+  bool painting() const { return mode_ == Mode::Paint; }
   // In tag mode: the tool's feature a click would toggle now (drawn highlighted), if any.
   const std::optional<TagTarget>& hovered() const { return hovered_; }
   // The box being dragged in tag mode (Shift + drag), for the app to draw.
   std::optional<DragBox> box() const { return mode_ == Mode::Box ? std::optional<DragBox>(box_) : std::nullopt; }
 
  private:
-  enum class Mode { Idle, Grab, DragTool, Orbit, Box };
+  enum class Mode { Idle, Grab, DragTool, Orbit, Box, Paint };
+  // Dabs from the last material point painted to `to`, a quarter of the radius apart.
+  void paintTo(EditorSession& session, const Vec2& to);
   // Where the cursor's ray meets the plane through `anchor` facing the camera.
   static Vec3 onDragPlane(const ui::OrbitCamera& camera, const Vec3& anchor, const Vec3& origin, const Vec3& dir);
 
@@ -69,6 +77,9 @@ class ViewportInteraction {
   int tool_ = -1;
   std::optional<TagTarget> hovered_;
   DragBox box_;
+  const StrengthBrush* paintBrush_ = nullptr;
+  int paintCloth_ = -1;
+  Vec2 lastDab_ = Vec2::Zero();
 };
 
 }  // namespace weft::editor

@@ -209,6 +209,7 @@ void drawMaterialPanel(EditorSession& session, PanelState& state) {
     std::snprintf(state.presetFolder, sizeof state.presetFolder, "%s", folder.string().c_str());
   }
   if (!material.source.empty()) ImGui::TextWrapped("source: %s", material.source.c_str());
+  drawStrengthBrushSection(session, state);
 
   double density = material.areaDensity;
   // Every typed value goes to the strict reader, which refuses a bad one with the reason.

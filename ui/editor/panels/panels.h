@@ -45,6 +45,8 @@ struct PanelState {
   double sharperThanDeg = 60.0;  // the tools panel's "tag edges sharper than" angle
   ToolTagEditors tools;               // the tools' sharp tags; current() is the one the tools panel edits
   bool tagMode = false;               // clicks on the tool in the viewport toggle sharp tags
+  bool paintMode = false;             // a left drag on a cloth paints its tear strength (material panel)
+  StrengthBrush brush;                // the material panel's tear strength brush
   bool throwBallRequested = false;    // the app throws one from the camera this frame
   HeadlessRecorder* recorder = nullptr;  // playback's "record" (owned by the app; none: no recording)
   int recordFrames = 120;
@@ -75,6 +77,9 @@ extern const ImVec4 kRefusedColour;
 
 void drawScenePanel(EditorSession& session, PanelState& state);
 void drawMaterialPanel(EditorSession& session, PanelState& state);
+// The Material panel's "Paint tear strength" section (strength_brush_section.cpp): the mode, the
+// brush's radius, strength and erase, what the picked cloth's map holds.
+void drawStrengthBrushSection(EditorSession& session, PanelState& state);
 void drawTearTablePanel(EditorSession& session, PanelState& state);
 void drawWeftPanel(EditorSession& session, PanelState& state);
 void drawSolverPanel(EditorSession& session, PanelState& state);
