@@ -7,6 +7,7 @@
 #include <Eigen/Geometry>
 
 #include "mesh/grid.h"
+#include "mesh/material_bounds.h"
 #include "mesh/obj_import.h"
 #include "util/input_error.h"
 
@@ -181,15 +182,9 @@ Cloth buildCloth(const ClothSpec& spec, const std::string& sceneFile, int clothI
   rebuildElements(cloth);
   if (spec.tearStrengthMap) {
     // By default the map spans the cloth's material-space bounding box (strength_map.h).
-    Vec2 lo = Vec2::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
-    for (const Triangle& t : cloth.mesh.tris) {
-      for (const Vec2& p : t.rest) {
-        lo = lo.cwiseMin(p);
-        hi = hi.cwiseMax(p);
-      }
-    }
+    const MaterialBounds bounds = materialBounds(cloth.mesh);
     cloth.tearStrengthMap = spec.tearStrengthMap;
-    prepareStrengthMap(*cloth.tearStrengthMap, lo, hi);
+    prepareStrengthMap(*cloth.tearStrengthMap, bounds.lo, bounds.hi);
   }
 
   for (size_t g = 0; g < spec.pins.size(); ++g) {

@@ -1,8 +1,8 @@
 // Live edits of a running World (world.h): each keeps positions, velocities and the torn topology,
 // refreshes what was derived from the edited value, and records the value in the World's scene.
-#include <limits>
 #include <stdexcept>
 
+#include "mesh/material_bounds.h"
 #include "sim/world_impl.h"
 
 namespace weft {
@@ -65,15 +65,9 @@ void World::setClothTearStrengthMap(int index, const std::optional<TearStrengthM
   Cloth& cloth = clothAt(w.cloths, index);
   cloth.tearStrengthMap = map;
   if (cloth.tearStrengthMap) {
-    // Over the material bounding box, as buildCloth places it (tears keep every rest corner).
-    Vec2 lo = Vec2::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
-    for (const Triangle& t : cloth.mesh.tris) {
-      for (const Vec2& p : t.rest) {
-        lo = lo.cwiseMin(p);
-        hi = hi.cwiseMax(p);
-      }
-    }
-    prepareStrengthMap(*cloth.tearStrengthMap, lo, hi);
+    // Over the material bounding box, as buildCloth places it.
+    const MaterialBounds bounds = materialBounds(cloth.mesh);
+    prepareStrengthMap(*cloth.tearStrengthMap, bounds.lo, bounds.hi);
   }
   w.scene.cloths[index].tearStrengthMap = map;
 }

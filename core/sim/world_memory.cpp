@@ -119,14 +119,12 @@ std::size_t TearSearch::heapBytes() const {
          weft::heapBytes(walked_) + weft::heapBytes(bound_) + weft::heapBytes(best_) +
          weft::heapBytes(excluded_) + weft::heapBytes(held_) + weft::heapBytes(sharpened_) + weft::heapBytes(place_) +
          weft::heapBytes(crackVertices_) + weft::heapBytes(version_) + weft::heapBytes(waiting_) +
-         weft::heapBytes(evaluatedHeap_) + weft::heapBytes(unboundedHeap_) + weft::heapBytes(aroundSpan_) +
-         weft::heapBytes(largestStress_) + weft::heapBytes(onBorder_);
+         weft::heapBytes(evaluatedHeap_) + weft::heapBytes(unboundedHeap_);
 }
 
 std::size_t TearStage::heapBytes() const {
   std::size_t bytes = weft::heapBytes(localStress_) + weft::heapBytes(stress_) + weft::heapBytes(nonlocal_) +
-                      weft::heapBytes(corners_) + weft::heapBytes(log_);
-  for (const TearSearch& search : search_) bytes += search.heapBytes();
+                      weft::heapBytes(corners_) + search_.heapBytes() + weft::heapBytes(log_);
   for (const auto& tips : overshoot_) bytes += weft::heapBytes(tips);
   for (const auto& waiting : overloadedSince_) bytes += weft::heapBytes(waiting);
   return bytes;

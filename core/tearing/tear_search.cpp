@@ -74,31 +74,6 @@ void TearSearch::start(const ClothMesh& mesh, const std::vector<TriangleCorners>
   weftAngleRad_ = weftAngleRad;
   settings_ = settings;
   const int n = mesh.vertexCount();
-  // The triangles around each vertex change only with the topology, which only tears change here
-  // (as the tear stage's other caches assume): after a step without a tear they are as they were.
-  if (!aroundCurrent_ || static_cast<int>(rowStart_.size()) != n + 1 ||
-      static_cast<int>(around_.size()) != 3 * mesh.triangleCount()) {
-    buildAround(mesh, corners);
-  }
-  bound_.assign(n, 0.0);
-  best_.assign(n, TearCandidate{});
-  excluded_.assign(n, 0);
-  held_.assign(n, 0);
-  sharpened_.assign(n, 0);
-  gated_ = false;
-  mature_.clear();
-  newlyOverloaded_.clear();
-  place_.assign(n, CrackPlace::None);
-  version_.assign(n, 0);
-  crackVertices_.clear();
-  waiting_.clear();
-  evaluatedHeap_.clear();
-  unboundedHeap_.clear();
-  screenAndLookAtAll(mesh, corners, stress, counts);
-}
-
-void TearSearch::buildAround(const ClothMesh& mesh, const std::vector<TriangleCorners>& corners) {
-  const int n = mesh.vertexCount();
   triangleAt_.assign(n, kNone);
   rowStart_.assign(n + 1, 0);
   for (int t = 0; t < mesh.triangleCount(); ++t) {
@@ -119,11 +94,21 @@ void TearSearch::buildAround(const ClothMesh& mesh, const std::vector<TriangleCo
     }
   }
   walked_.assign(n, 0);
-  onBorder_.assign(n, 0);
-  for (const Edge& edge : mesh.edges) {
-    if (edge.isBoundary()) onBorder_[edge.v[0]] = onBorder_[edge.v[1]] = 1;
-  }
-  aroundCurrent_ = true;
+  bound_.assign(n, 0.0);
+  best_.assign(n, TearCandidate{});
+  excluded_.assign(n, 0);
+  held_.assign(n, 0);
+  sharpened_.assign(n, 0);
+  gated_ = false;
+  mature_.clear();
+  newlyOverloaded_.clear();
+  place_.assign(n, CrackPlace::None);
+  version_.assign(n, 0);
+  crackVertices_.clear();
+  waiting_.clear();
+  evaluatedHeap_.clear();
+  unboundedHeap_.clear();
+  screenAndLookAtAll(mesh, corners, stress, counts);
 }
 
 void TearSearch::screenAndLookAtAll(const ClothMesh& mesh, const std::vector<TriangleCorners>& corners,
@@ -137,6 +122,10 @@ void TearSearch::screenAndLookAtAll(const ClothMesh& mesh, const std::vector<Tri
   // below 1 too.
   largestStress_.resize(stress.size());
   for (std::size_t t = 0; t < stress.size(); ++t) largestStress_[t] = spectralNorm(stress[t]);
+  onBorder_.assign(n, 0);
+  for (const Edge& edge : mesh.edges) {
+    if (edge.isBoundary()) onBorder_[edge.v[0]] = onBorder_[edge.v[1]] = 1;
+  }
   const double screen = (1.0 + 1e-9) / weakestStrength(*table_);
   for (int v = 0; v < n; ++v) {
     if (settings_.skipByBound && !onBorder_[v] && rowStart_[v] < rowStart_[v + 1]) {
@@ -156,7 +145,6 @@ void TearSearch::refresh(const ClothMesh& mesh, const std::vector<TriangleCorner
                          const std::vector<Mat2>& stress, const std::vector<int>& triangles,
                          const std::vector<int>& extraVertices, TearSearchCounts& counts) {
   const std::size_t n = static_cast<std::size_t>(mesh.vertexCount());
-  aroundCurrent_ = false;  // a tear changed the topology: the next step builds them anew
   triangleAt_.resize(n, kNone);
   bound_.resize(n, 0.0);
   best_.resize(n);

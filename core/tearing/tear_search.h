@@ -79,9 +79,6 @@ class TearSearch {
                          TearSearchCounts& counts);
 
  private:
-  // The triangles around each vertex (rowStart_, around_, aroundSpan_, triangleAt_), which
-  // vertices are on a border, and none walked.
-  void buildAround(const ClothMesh& mesh, const std::vector<TriangleCorners>& corners);
   // Every vertex's bound at the start of a step, the interior ones screened first by their arcs.
   void screenAndLookAtAll(const ClothMesh& mesh, const std::vector<TriangleCorners>& corners,
                           const std::vector<Mat2>& stress, TearSearchCounts& counts);
@@ -111,7 +108,6 @@ class TearSearch {
   std::vector<int> rowStart_, around_;
   std::vector<double> aroundSpan_;       // per entry of around_: the vertex's corner angle in that triangle
   std::vector<char> walked_;
-  bool aroundCurrent_ = false;           // the rows above are the mesh's (no tear since they were built)
   std::vector<double> bound_;            // per vertex: bound on its best omega (0: cannot tear)
   std::vector<TearCandidate> best_;      // per vertex: its best line, valid while its heap entry is current
   std::vector<char> excluded_;
@@ -136,7 +132,7 @@ class TearSearch {
   bool offerable(const Entry& entry) const;
   StressFan fan_;                        // reused
   std::vector<double> largestStress_;    // per triangle, this step's screen (reused)
-  std::vector<char> onBorder_;           // per vertex, when the rows above were built
+  std::vector<char> onBorder_;           // per vertex, at the start of the step
 };
 
 }  // namespace weft

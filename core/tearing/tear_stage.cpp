@@ -111,7 +111,7 @@ bool TearStage::incubated(const Incubating& vertex, double time, double dt) cons
   return time - vertex.since >= spec_.incubation - 1e-9 * dt;
 }
 
-void TearStage::holdIncubating(TearSearch& search, const Cloth& cloth, const std::vector<TriangleCorners>& corners,
+void TearStage::holdIncubating(const Cloth& cloth, const std::vector<TriangleCorners>& corners,
                                const std::unordered_map<int, Incubating>& before, double time, double dt,
                                std::unordered_map<int, Incubating>& now) {
   // In vertex order, so the work done does not depend on the map's order.
@@ -119,12 +119,12 @@ void TearStage::holdIncubating(TearSearch& search, const Cloth& cloth, const std
   std::sort(waiting.begin(), waiting.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
   for (auto [vertex, incubating] : waiting) {
     if (incubated(incubating, time, dt)) continue;  // offered as usual: it may start a crack now
-    if (!search.overloadedAsStart(cloth.mesh, corners, stress_, vertex, incubating.angle, incubating.angle,
+    if (!search_.overloadedAsStart(cloth.mesh, corners, stress_, vertex, incubating.angle, incubating.angle,
                                    stats_.search)) {
       continue;  // its omega fell to 1 or below: its clock stops
     }
     now[vertex] = incubating;
-    search.hold(vertex);
+    search_.hold(vertex);
   }
 }
 
@@ -133,7 +133,6 @@ std::vector<TopologyChange> TearStage::run(std::vector<Cloth>& cloths, double ti
   if (!runs_) return changed;
   if (corners_.size() != cloths.size()) corners_.resize(cloths.size());
   if (nonlocal_.size() != cloths.size()) nonlocal_.resize(cloths.size());
-  if (search_.size() != cloths.size()) search_.resize(cloths.size());
   for (std::size_t c = 0; c < cloths.size(); ++c) {
     if (!cloths[c].material.tearTable) continue;
     changed[c] = tearCloth(cloths[c], static_cast<int>(c), time, dt, profile);
@@ -149,7 +148,6 @@ TopologyChange TearStage::tearCloth(Cloth& cloth, int clothIndex, double time, d
   guards.minAngleDeg = spec_.minAngleDeg;
   guards.snapAngleDeg = spec_.snapAngleDeg;
   std::vector<TriangleCorners>& corners = corners_[clothIndex];
-  TearSearch& search = search_[clothIndex];
   if (corners.size() != cloth.mesh.tris.size()) corners = triangleCorners(cloth.mesh);
   if (overshoot_.size() != corners_.size()) overshoot_.resize(corners_.size());
   if (overloadedSince_.size() != corners_.size()) overloadedSince_.resize(corners_.size());
@@ -173,15 +171,15 @@ TopologyChange TearStage::tearCloth(Cloth& cloth, int clothIndex, double time, d
   }
   {
     StageTimer timer(profile, "tear_search");
-    search.setStrengthMap(cloth.tearStrengthMap ? &*cloth.tearStrengthMap : nullptr);
-    search.start(cloth.mesh, corners, stress_, table, cloth.weftAngleRad, searchSettings_, stats_.search);
+    search_.setStrengthMap(cloth.tearStrengthMap ? &*cloth.tearStrengthMap : nullptr);
+    search_.start(cloth.mesh, corners, stress_, table, cloth.weftAngleRad, searchSettings_, stats_.search);
     if (spec_.incubation > 0.0 && !incubated(Incubating{time - dt, 0.0}, time, dt)) {
       // Only vertices that have waited long enough are offered as crack starts; the others are
       // asked only whether they are (still) overloaded.
       std::vector<char> mature(cloth.mesh.x.size(), 0);
       for (const auto& [vertex, incubating] : overloadedBefore) mature[vertex] = incubated(incubating, time, dt);
-      search.gateStarts(std::move(mature));
-      holdIncubating(search, cloth, corners, overloadedBefore, time, dt, overloadedNow);
+      search_.gateStarts(std::move(mature));
+      holdIncubating(cloth, corners, overloadedBefore, time, dt, overloadedNow);
     }
   }
   // A crack tip runs at most this far per step (m); without propagation the stage stops after
@@ -199,11 +197,11 @@ TopologyChange TearStage::tearCloth(Cloth& cloth, int clothIndex, double time, d
     {
       StageTimer timer(profile, "tear_search");
       while (!running.empty() && !best) {
-        const TearCandidate line = search.tipLineAt(cloth.mesh, corners, stress_, running.front(), stats_.search);
+        const TearCandidate line = search_.tipLineAt(cloth.mesh, corners, stress_, running.front(), stats_.search);
         running.pop_front();
         if (line.vertex != kNone && line.ratio >= kRunOnRatio) best = line;
       }
-      if (!best) best = search.best(cloth.mesh, corners, stress_, stats_.search);
+      if (!best) best = search_.best(cloth.mesh, corners, stress_, stats_.search);
     }
     if (!best) break;
     const int vertex = best->vertex;
@@ -222,7 +220,7 @@ TopologyChange TearStage::tearCloth(Cloth& cloth, int clothIndex, double time, d
       overloadedNow[vertex] =
           Incubating{since != overloadedBefore.end() ? since->second.since : time - dt, best->angle};
       if (!incubated(overloadedNow[vertex], time, dt)) {
-        search.exclude(vertex);
+        search_.exclude(vertex);
         continue;
       }
     }
@@ -231,19 +229,19 @@ TopologyChange TearStage::tearCloth(Cloth& cloth, int clothIndex, double time, d
     // the stress is the opening's: the row of triangles along a lip takes up the lip's sliding as
     // shear, which read as a load would start cracks across the first one.
     const double tipReach = spec_.stressLength > 0.0 ? spec_.stressLength : searchSettings_.tipLength;
-    if ((starts && spec_.propagate && tipReach > 0.0 && search.nearCrack(cloth.mesh, best->restPosition, 2.0 * tipReach)) ||
+    if ((starts && spec_.propagate && tipReach > 0.0 && search_.nearCrack(cloth.mesh, best->restPosition, 2.0 * tipReach)) ||
         (starts && spec_.propagate && crackStarts >= spec_.maxTearsPerStep) ||
         (!continues && std::any_of(started.begin(), started.end(), [&](const Vec2& p) {
           return (p - best->restPosition).norm() < spec_.minSpacing;
         }))) {
-      search.exclude(vertex);
+      search_.exclude(vertex);
       continue;
     }
     const int front = fronts.frontOf(vertex, overshoot_[clothIndex]);
     if (fronts.advanced[front] >= reach) {
       if (!continues) stillOwed[vertex] = fronts.advanced[front] - reach;  // a tip still paying off
       ++stats_.stoppedBySpeed;
-      search.exclude(vertex);
+      search_.exclude(vertex);
       continue;
     }
 
@@ -262,14 +260,14 @@ TopologyChange TearStage::tearCloth(Cloth& cloth, int clothIndex, double time, d
       return false;
     };
     if (!tryLine(*best)) {
-      for (const TearCandidate& line : search.linesAt(cloth.mesh, corners, stress_, vertex)) {
+      for (const TearCandidate& line : search_.linesAt(cloth.mesh, corners, stress_, vertex)) {
         if (std::abs(line.angle - best->angle) < 1e-12) continue;
         if (tryLine(line)) break;
       }
     }
     if (!torn) {
       surgeryTimer.reset();
-      search.exclude(vertex);
+      search_.exclude(vertex);
       continue;
     }
     applyTopologyChange(cloth, change);
@@ -338,13 +336,13 @@ TopologyChange TearStage::tearCloth(Cloth& cloth, int clothIndex, double time, d
     std::vector<int> vertices = change.massChangedVertices;
     vertices.insert(vertices.end(), change.crackEnds.begin(), change.crackEnds.end());
     vertices.push_back(vertex);
-    search.refresh(cloth.mesh, corners, stress_, restressed, vertices, stats_.search);
+    search_.refresh(cloth.mesh, corners, stress_, restressed, vertices, stats_.search);
   }
   // A vertex not offered this step dropped below omega = 1, unless the step stopped before offering
   // everything above 1 (its tear budget ran out): then the vertices of the last step keep waiting.
   if (spec_.incubation > 0.0) {
     // The vertices whose omega went above 1 this step start their clocks.
-    for (const TearSearch::Overloaded& found : search.newlyOverloaded()) {
+    for (const TearSearch::Overloaded& found : search_.newlyOverloaded()) {
       overloadedNow.try_emplace(found.vertex, Incubating{time - dt, found.angle});
     }
     if (tears >= maxTears) overloadedNow.insert(overloadedBefore.begin(), overloadedBefore.end());

@@ -64,7 +64,7 @@ class TearStage {
   // The vertices still incubating whose omega stays above 1 are kept in `now` and held from
   // starting a crack this step, at the cost of one line each where their load barely moved (not a
   // search of their whole fan, as offering them would cost).
-  void holdIncubating(TearSearch& search, const Cloth& cloth, const std::vector<TriangleCorners>& corners,
+  void holdIncubating(const Cloth& cloth, const std::vector<TriangleCorners>& corners,
                       const std::unordered_map<int, Incubating>& before, double time, double dt,
                       std::unordered_map<int, Incubating>& now);
 
@@ -76,7 +76,7 @@ class TearStage {
   std::vector<Mat2> stress_;       // what the search reads: localStress_, averaged when stress_length > 0
   std::vector<NonlocalStress> nonlocal_;  // per cloth: its neighbourhoods are its mesh's, patched after each tear
   std::vector<std::vector<TriangleCorners>> corners_;  // per cloth, patched after each tear
-  std::vector<TearSearch> search_;  // per cloth: it keeps what the mesh alone decides from step to step
+  TearSearch search_;
   // A vertex whose omega is above 1, waiting out the incubation before it may start a crack.
   struct Incubating {
     double since = 0.0;  // when its omega went above 1 (s); kept while it stays above 1

@@ -19,6 +19,7 @@
 #include "editor/strength_painting.h"
 #include "editor/tool_tag_editors.h"
 #include "editor/viewport_interaction.h"
+#include "mesh/material_bounds.h"
 #include "sim/pick.h"
 #include "sim/world.h"
 #include "support/tear_scenes.h"
@@ -71,8 +72,8 @@ struct FacingSheet {
     const std::optional<TearStrengthMap>& map = world.scene().cloths[0].tearStrengthMap;
     if (!map) return 1.0;
     TearStrengthMap prepared = *map;
-    Vec2 lo, hi;
-    clothMaterialBounds(world.cloth(0), lo, hi);
+    const MaterialBounds bounds = materialBounds(world.cloth(0));
+    const Vec2 lo = bounds.lo, hi = bounds.hi;
     prepareStrengthMap(prepared, lo, hi);
     return strengthMultiplierAt(prepared, p);
   }
@@ -208,8 +209,8 @@ TEST(StrengthPaintingInTheEditor, ABandHandedToARunningWorldMakesItTearInsideThe
   World world(scene);
   world.step();
   ASSERT_TRUE(world.tearLog().empty());
-  Vec2 lo, hi;
-  clothMaterialBounds(world.cloth(0), lo, hi);
+  const MaterialBounds bounds = materialBounds(world.cloth(0));
+  const Vec2 lo = bounds.lo, hi = bounds.hi;
   StrengthPainting painting(newStrengthMap(lo, hi, "band.png"), nullptr);
   StrengthBrush brush;
   brush.radius = 0.05;

@@ -9,6 +9,7 @@
 #include <memory>
 
 #include "editor/strength_painting.h"
+#include "mesh/material_bounds.h"
 #include "scene/scene_json.h"
 #include "sim/world.h"
 #include "support/tear_scenes.h"
@@ -124,8 +125,8 @@ TEST(StrengthPainting, ASceneSavedWithItsPaintedMapLoadsTheSameMultipliers) {
   const std::filesystem::path sceneFile = dir.write("shirt.json", scene.dump());
   const Scene before = loadScene(sceneFile);
   World world(before);
-  Vec2 lo, hi;
-  clothMaterialBounds(world.cloth(0), lo, hi);
+  const MaterialBounds bounds = materialBounds(world.cloth(0));
+  const Vec2 lo = bounds.lo, hi = bounds.hi;
   const std::filesystem::path png = paintedMapFile(sceneFile, "sheet", "");
   EXPECT_EQ(png, dir.path() / "shirt.sheet.strength.png");
   StrengthPainting painting(newStrengthMap(lo, hi, png.filename().string()), nullptr);
@@ -179,11 +180,8 @@ TEST(StrengthPainting, APaintedBandMakesAPulledSheetTearInsideIt) {
   const int resolution = 24;
   const double edge = 1.0 / (resolution - 1);
   Scene scene = test::biaxialSheet(resolution, test::tearTable({1.0}, 450.0), 0.0, true);
-  Vec2 lo, hi;
-  {
-    const World unpainted(scene);
-    clothMaterialBounds(unpainted.cloth(0), lo, hi);
-  }
+  const MaterialBounds bounds = materialBounds(World(scene).cloth(0));
+  const Vec2 lo = bounds.lo, hi = bounds.hi;
   StrengthPainting painting(newStrengthMap(lo, hi, "band.png"), nullptr);
   StrengthBrush brush;
   brush.radius = 0.05;  // coverage over 0.5 within 2.5 cm of the stroke

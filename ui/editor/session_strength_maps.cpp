@@ -9,6 +9,7 @@
 #include <system_error>
 
 #include "editor/editor_session.h"
+#include "mesh/material_bounds.h"
 #include "sim/live_edit.h"
 
 namespace weft::editor {
@@ -28,8 +29,8 @@ std::string namedImage(const nlohmann::json& scene, int cloth) {
 StrengthPainting& EditorSession::strengthPainting(int cloth) {
   if (StrengthPainting* found = findStrengthPainting(cloth)) return *found;
   if (cloth < 0 || cloth >= static_cast<int>(scene_.cloths.size())) throw std::out_of_range("no cloth " + std::to_string(cloth));
-  Vec2 lo, hi;
-  clothMaterialBounds(world().cloth(cloth), lo, hi);
+  const MaterialBounds bounds = materialBounds(world().cloth(cloth));
+  const Vec2 lo = bounds.lo, hi = bounds.hi;
   const ClothSpec& spec = scene_.cloths[static_cast<std::size_t>(cloth)];
   TearStrengthMap start;
   if (spec.tearStrengthMap) {

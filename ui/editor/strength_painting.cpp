@@ -38,17 +38,6 @@ Vec2 materialPointOfHit(const World& world, const ClothHit& hit) {
   return w[0] * t.rest[0] + w[1] * t.rest[1] + w[2] * t.rest[2];
 }
 
-void clothMaterialBounds(const ClothMesh& mesh, Vec2& outLo, Vec2& outHi) {
-  outLo = Vec2::Constant(std::numeric_limits<double>::infinity());
-  outHi = -outLo;
-  for (const Triangle& t : mesh.tris) {
-    for (const Vec2& p : t.rest) {
-      outLo = outLo.cwiseMin(p);
-      outHi = outHi.cwiseMax(p);
-    }
-  }
-}
-
 TearStrengthMap newStrengthMap(const Vec2& lo, const Vec2& hi, const std::string& image) {
   TearStrengthMap map;
   map.image = image;

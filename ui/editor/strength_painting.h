@@ -45,10 +45,6 @@ double brushCoverage(double distance, double radius);
 // by the hit point's barycentric coordinates in its current (deformed) triangle.
 Vec2 materialPointOfHit(const World& world, const ClothHit& hit);
 
-// The cloth's material-space bounding box (every triangle's rest corners): where a map without
-// an explicit extent lies (as sim/cloth.cpp's buildCloth places it).
-void clothMaterialBounds(const ClothMesh& mesh, Vec2& outLo, Vec2& outHi);
-
 // The map a cloth gets on its first stroke when it has none: white over [lo, hi] (its material
 // bounds) at about 4 mm a pixel (16 to 1024 pixels a side), black 0.05, white 1, named `image`.
 TearStrengthMap newStrengthMap(const Vec2& lo, const Vec2& hi, const std::string& image);
