@@ -22,6 +22,8 @@
 #include "mesh/material_bounds.h"
 #include "sim/pick.h"
 #include "sim/world.h"
+#include "support/facing_sheet.h"
+#include "support/painted_band.h"
 #include "support/tear_scenes.h"
 #include "support/temp_dir.h"
 #include "tearing/strength_map.h"
@@ -32,29 +34,8 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-const fs::path kSource = WEFT_SOURCE_DIR;
-
-// The hanging sheet, small, seen from straight in front (as viewport_and_tags_test.cpp's).
-struct FacingSheet {
-  test::TempDir dir;
-  fs::path file;
-  std::unique_ptr<EditorSession> session;
-  ui::OrbitCamera camera;
-  static constexpr int kWidth = 800, kHeight = 600;
-
-  FacingSheet() {
-    std::ifstream in(kSource / "presets/scenes/hanging-sheet.json");
-    json scene = json::parse(in);
-    scene["cloths"][0]["mesh"]["grid"]["resolution"] = json::array({8, 8});
-    scene["cloths"][0]["placement"] = json::parse(R"({"translate": [-0.5, 0.5, 0]})");  // hangs in z = 0
-    file = dir.write("scenes/sheet.json", scene.dump());
-    session = std::make_unique<EditorSession>(file);
-    camera.target = Vec3(0, 1.0, 0);
-    camera.distance = 3.0;
-    camera.yawDeg = 0.0;
-    camera.pitchDeg = 0.0;
-  }
-
+// The facing sheet (support/facing_sheet.h) and what the brush's tests ask of it.
+struct FacingSheet : test::FacingSheet {
   // The material point under the pixel (x, y).
   Vec2 materialPointAt(double x, double y) {
     Vec3 origin, dir;
@@ -209,23 +190,9 @@ TEST(StrengthPaintingInTheEditor, ABandHandedToARunningWorldMakesItTearInsideThe
   World world(scene);
   world.step();
   ASSERT_TRUE(world.tearLog().empty());
-  const MaterialBounds bounds = materialBounds(world.cloth(0));
-  const Vec2 lo = bounds.lo, hi = bounds.hi;
-  StrengthPainting painting(newStrengthMap(lo, hi, "band.png"), nullptr);
-  StrengthBrush brush;
-  brush.radius = 0.05;
-  brush.multiplier = 0.12;
-  painting.beginStroke();
-  for (double x = lo.x(); x <= hi.x() + 1e-9; x += 0.01) painting.dab(Vec2(x, 0.3), brush);
-  painting.endStroke();
-  world.setClothTearStrengthMap(0, painting.map());
+  world.setClothTearStrengthMap(0, test::paintedBand(materialBounds(world.cloth(0))));
   for (int s = 1; s < 56; ++s) world.step();
-  ASSERT_FALSE(world.tearLog().empty());
-  const Vec2 first = world.tearLog().front().restPosition;
-  EXPECT_LT(std::abs(first.y() - 0.3), 0.025 + edge) << "first tear at y = " << first.y();
-  int inside = 0;
-  for (const TearRecord& r : world.tearLog()) inside += std::abs(r.restPosition.y() - 0.3) < 0.025 + edge;
-  EXPECT_GE(static_cast<double>(inside) / world.tearLog().size(), 0.9);
+  test::expectTearsInsideBand(world.tearLog(), edge);
 }
 
 }  // namespace

@@ -12,6 +12,7 @@
 #include "mesh/material_bounds.h"
 #include "scene/scene_json.h"
 #include "sim/world.h"
+#include "support/painted_band.h"
 #include "support/tear_scenes.h"
 #include "support/temp_dir.h"
 #include "tearing/strength_map.h"
@@ -180,24 +181,10 @@ TEST(StrengthPainting, APaintedBandMakesAPulledSheetTearInsideIt) {
   const int resolution = 24;
   const double edge = 1.0 / (resolution - 1);
   Scene scene = test::biaxialSheet(resolution, test::tearTable({1.0}, 450.0), 0.0, true);
-  const MaterialBounds bounds = materialBounds(World(scene).cloth(0));
-  const Vec2 lo = bounds.lo, hi = bounds.hi;
-  StrengthPainting painting(newStrengthMap(lo, hi, "band.png"), nullptr);
-  StrengthBrush brush;
-  brush.radius = 0.05;  // coverage over 0.5 within 2.5 cm of the stroke
-  brush.multiplier = 0.12;
-  painting.beginStroke();
-  for (double x = lo.x(); x <= hi.x() + 1e-9; x += 0.01) painting.dab(Vec2(x, 0.3), brush);
-  painting.endStroke();
-  scene.cloths[0].tearStrengthMap = painting.map();
+  scene.cloths[0].tearStrengthMap = test::paintedBand(materialBounds(World(scene).cloth(0)));
   World world(scene);
   for (int s = 0; s < 56; ++s) world.step();
-  ASSERT_FALSE(world.tearLog().empty());
-  const Vec2 first = world.tearLog().front().restPosition;
-  EXPECT_LT(std::abs(first.y() - 0.3), 0.025 + edge) << "first tear at y = " << first.y();
-  int inside = 0;
-  for (const TearRecord& r : world.tearLog()) inside += std::abs(r.restPosition.y() - 0.3) < 0.025 + edge;
-  EXPECT_GE(static_cast<double>(inside) / world.tearLog().size(), 0.9);
+  test::expectTearsInsideBand(world.tearLog(), edge);
 }
 
 }  // namespace

@@ -16,6 +16,7 @@
 #include "editor/sharp_tag_edits.h"
 #include "editor/viewport_interaction.h"
 #include "rigid/sharp_tags.h"
+#include "support/facing_sheet.h"
 #include "support/temp_dir.h"
 
 namespace weft::editor {
@@ -33,25 +34,7 @@ json readJson(const fs::path& file) {
   return json::parse(in);
 }
 
-// The hanging sheet, small, seen from straight in front.
-struct FacingSheet {
-  test::TempDir dir;
-  fs::path file;
-  std::unique_ptr<EditorSession> session;
-  ui::OrbitCamera camera;
-
-  FacingSheet() {
-    json scene = readJson(kSource / "presets/scenes/hanging-sheet.json");
-    scene["cloths"][0]["mesh"]["grid"]["resolution"] = json::array({8, 8});
-    scene["cloths"][0]["placement"] = json::parse(R"({"translate": [-0.5, 0.5, 0]})");  // hangs in z = 0
-    file = dir.write("scenes/sheet.json", scene.dump());
-    session = std::make_unique<EditorSession>(file);
-    camera.target = Vec3(0, 1.0, 0);
-    camera.distance = 3.0;
-    camera.yawDeg = 0.0;
-    camera.pitchDeg = 0.0;
-  }
-};
+using test::FacingSheet;
 
 TEST(ViewportInteraction, APressOnTheClothGrabsItADragMovesTheTargetAReleaseLetsGo) {
   FacingSheet s;
