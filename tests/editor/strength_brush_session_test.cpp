@@ -46,16 +46,17 @@ struct FacingSheet : test::FacingSheet {
     return hit ? materialPointOfHit(world, *hit) : Vec2::Zero();
   }
 
-  // The multiplier the running world's cloth 0 has at material point `p` (1 without a map).
+  // The multiplier the running world's cloth 0 (or `cloth`) has at material point `p` (1 without
+  // a map).
   double worldMultiplierAt(const Vec2& p) { return multiplierAt(session->world(), p); }
+  double clothMultiplierAt(int cloth, const Vec2& p) { return multiplierAt(session->world(), p, cloth); }
 
-  static double multiplierAt(const World& world, const Vec2& p) {
-    const std::optional<TearStrengthMap>& map = world.scene().cloths[0].tearStrengthMap;
+  static double multiplierAt(const World& world, const Vec2& p, int cloth = 0) {
+    const std::optional<TearStrengthMap>& map = world.scene().cloths[static_cast<std::size_t>(cloth)].tearStrengthMap;
     if (!map) return 1.0;
     TearStrengthMap prepared = *map;
-    const MaterialBounds bounds = materialBounds(world.cloth(0));
-    const Vec2 lo = bounds.lo, hi = bounds.hi;
-    prepareStrengthMap(prepared, lo, hi);
+    const MaterialBounds bounds = materialBounds(world.cloth(cloth));
+    prepareStrengthMap(prepared, bounds.lo, bounds.hi);
     return strengthMultiplierAt(prepared, p);
   }
 
@@ -178,6 +179,42 @@ TEST(StrengthPaintingInTheEditor, TheAutosaveKeepsUnsavedPaintAndRecoveringItSav
   EXPECT_FALSE(fs::exists(image)) << "the autosave's PNG goes with it";
   EditorSession reopened(s.file);
   EXPECT_NEAR(FacingSheet::multiplierAt(reopened.world(), painted), 0.25, 0.02);
+}
+
+// Paintings follow their cloths, not their indices: removing the cloth before a painted one leaves
+// the paint on its own cloth, now first, and undoing the removal puts it back where it was.
+TEST(StrengthPaintingInTheEditor, APaintingStaysWithItsClothWhenAnEarlierClothIsRemoved) {
+  FacingSheet s;
+  ASSERT_TRUE(s.session->edit(withClothDuplicated(s.session->json(), 0, Vec3(0.0, 0.0, 0.3)), "duplicate cloth").accepted);
+  s.session->reset();  // a new cloth needs a new world
+  ASSERT_EQ(s.session->scene().cloths.size(), 2u);
+  const std::string paintedName = s.session->scene().cloths[1].name;
+  StrengthPainting& painting = s.session->strengthPainting(1);
+  StrengthBrush brush;
+  brush.radius = 0.1;
+  brush.multiplier = 0.2;
+  const Vec2 spot(0.5, 0.5);
+  painting.beginStroke();
+  painting.dab(spot, brush);
+  painting.endStroke();
+  s.session->strengthPaintingChanged(1);
+  ASSERT_LT(s.clothMultiplierAt(1, spot), 0.3);
+
+  ASSERT_TRUE(s.session->edit(withoutCloth(s.session->json(), 0), "remove cloth").accepted);
+  s.session->reset();  // whatever the removal needs, the world is built from the scene now
+  ASSERT_EQ(s.session->scene().cloths.size(), 1u);
+  EXPECT_EQ(s.session->scene().cloths[0].name, paintedName);
+  EXPECT_EQ(s.session->findStrengthPainting(0), &painting) << "the painting went with its cloth";
+  EXPECT_EQ(s.session->findStrengthPainting(1), nullptr);
+  EXPECT_LT(s.clothMultiplierAt(0, spot), 0.3) << "the painted cloth keeps its paint in the world";
+
+  s.session->undo();
+  s.session->reset();
+  ASSERT_EQ(s.session->scene().cloths.size(), 2u);
+  EXPECT_EQ(s.session->findStrengthPainting(1), &painting) << "back with its cloth";
+  EXPECT_EQ(s.session->findStrengthPainting(0), nullptr);
+  EXPECT_DOUBLE_EQ(s.clothMultiplierAt(0, spot), 1.0) << "the unpainted cloth is not painted";
+  EXPECT_LT(s.clothMultiplierAt(1, spot), 0.3);
 }
 
 // The hand-over itself: a band painted into a world already running (World's setter, as the

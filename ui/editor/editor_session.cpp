@@ -74,6 +74,7 @@ void EditorSession::redo() {
 // Every state in the history parsed when it was committed, so parsing it again cannot fail.
 void EditorSession::applyDocument(const std::string& label) {
   Scene parsed = parse(document_.json(), document_.file());
+  followClothNames(parsed);  // a painting stays with its cloth when cloths are removed or added
   Scene edited = withPaintedMaps(parsed);  // what the brush painted stays, whatever the file names
   // A tool's tags saved into the file the scene now names (sharp_tag_edits.h) change only where
   // the tags come from: live when the world's tool already has them (the tags files are read then,

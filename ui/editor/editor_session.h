@@ -15,6 +15,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -192,6 +193,11 @@ class EditorSession {
   double meteredTime_ = 0.0;      // simulated time the meter has counted up to
   PlaybackMeter meter_;
   std::map<int, std::unique_ptr<StrengthPainting>> paintings_;  // by cloth index
+  // The paintings of cloths an edit removed, by cloth name: back with their cloth when the
+  // removal is undone.
+  std::vector<std::pair<std::string, std::unique_ptr<StrengthPainting>>> asidePaintings_;
+  // paintings_ re-keyed from scene_'s cloths to `next`'s, by name (session_strength_maps.cpp).
+  void followClothNames(const Scene& next);
 };
 
 }  // namespace weft::editor

@@ -6,8 +6,11 @@
 // wherever it hands a scene to the world: live edits, resets and rewinds of the timeline all see
 // the painted map, never the file's.
 #include <stdexcept>
+#include <iterator>
 #include <system_error>
+#include <utility>
 
+#include "editor/align_by_name.h"
 #include "editor/editor_session.h"
 #include "mesh/material_bounds.h"
 #include "sim/live_edit.h"
@@ -51,6 +54,34 @@ StrengthPainting* EditorSession::findStrengthPainting(int cloth) {
 const StrengthPainting* EditorSession::findStrengthPainting(int cloth) const {
   const auto it = paintings_.find(cloth);
   return it == paintings_.end() ? nullptr : it->second.get();
+}
+
+void EditorSession::followClothNames(const Scene& next) {
+  std::vector<std::string> before, after;
+  for (const ClothSpec& cloth : scene_.cloths) before.push_back(cloth.name);
+  for (const ClothSpec& cloth : next.cloths) after.push_back(cloth.name);
+  if (before == after) return;
+  const std::vector<int> to = alignByName(before, after);
+  std::map<int, std::unique_ptr<StrengthPainting>> moved;
+  for (auto& [was, painting] : paintings_) {
+    const int now = was < static_cast<int>(to.size()) ? to[static_cast<std::size_t>(was)] : -1;
+    if (now >= 0) {
+      moved.emplace(now, std::move(painting));
+    } else if (was < static_cast<int>(before.size())) {
+      asidePaintings_.emplace_back(before[static_cast<std::size_t>(was)], std::move(painting));
+    }
+  }
+  // A cloth back in the scene (its removal undone) gets its painting back, the latest of its name.
+  for (int now = 0; now < static_cast<int>(after.size()); ++now) {
+    if (moved.count(now)) continue;
+    for (auto it = asidePaintings_.rbegin(); it != asidePaintings_.rend(); ++it) {
+      if (it->first != after[static_cast<std::size_t>(now)]) continue;
+      moved.emplace(now, std::move(it->second));
+      asidePaintings_.erase(std::next(it).base());
+      break;
+    }
+  }
+  paintings_ = std::move(moved);
 }
 
 std::vector<int> EditorSession::paintedCloths() const {
