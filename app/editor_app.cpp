@@ -219,7 +219,7 @@ int runEditor(const EditorOptions& options) {
               painted.scene().cloths[static_cast<std::size_t>(c)].tearStrengthMap) {
             painting = &painted.strengthPainting(c);  // the map the scene loads, shown before a stroke
           }
-          if (painting != nullptr) view.cloths[static_cast<std::size_t>(c)].strengthTint = std::make_shared<const TearStrengthMap>(painting->map());
+          if (painting != nullptr) view.cloths[static_cast<std::size_t>(c)].strengthTint = painting->sharedMap();
         }
       }
       editor::drawSceneViewport(renderer, view, camera, viewportRect(), size.width, size.height);

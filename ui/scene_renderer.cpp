@@ -140,6 +140,8 @@ struct SceneRenderer::Gl {
   GlProgram surface{"surface", kSurfaceVertex, kSurfaceFragment};
   GlProgram flat{"flat", kFlatVertex, kFlatFragment};
   GLuint vao = 0, surfaceBuffer = 0, lineBuffer = 0, strengthTexture = 0;
+  // The map strengthTexture holds (kept, so that a new map at the same address is still new).
+  std::shared_ptr<const TearStrengthMap> uploadedStrength;
 
   Gl() {
     glGenVertexArrays(1, &vao);
@@ -329,7 +331,12 @@ void SceneRenderer::draw(const RenderView& view, const OrbitCamera& camera, int 
                         tint->multiplier.size() == static_cast<std::size_t>(tint->width) * tint->height;
     glUniform1i(gl.surface.uniform("uTinted"), tinted ? 1 : 0);
     if (tinted) {
-      uploadStrengthTexture(gl.strengthTexture, *tint);
+      if (gl.uploadedStrength != cloth.strengthTint) {  // a map changes per stroke, not per frame
+        uploadStrengthTexture(gl.strengthTexture, *tint);
+        gl.uploadedStrength = cloth.strengthTint;
+      }
+      glActiveTexture(GL_TEXTURE0);
+      glBindTexture(GL_TEXTURE_2D, gl.strengthTexture);
       glUniform1i(gl.surface.uniform("uStrength"), 0);
       glUniform2f(gl.surface.uniform("uStrengthLo"), static_cast<float>(tint->lo.x()), static_cast<float>(tint->lo.y()));
       glUniform2f(gl.surface.uniform("uStrengthHi"), static_cast<float>(tint->hi.x()), static_cast<float>(tint->hi.y()));

@@ -144,6 +144,12 @@ void StrengthPainting::show(const nlohmann::json& state) {
 void StrengthPainting::refresh() {
   for (std::size_t i = 0; i < grey_.size(); ++i) map_.grey[i] = static_cast<float>(grey_[i] / 255.0);  // as readStrengthImage
   prepareStrengthMap(map_, map_.lo, map_.hi);
+  shared_.reset();
+}
+
+std::shared_ptr<const TearStrengthMap> StrengthPainting::sharedMap() const {
+  if (!shared_) shared_ = std::make_shared<const TearStrengthMap>(map_);
+  return shared_;
 }
 
 void StrengthPainting::savePng(const std::filesystem::path& file) {

@@ -67,6 +67,9 @@ class StrengthPainting {
 
   // The map as painted so far, prepared for sampling (strengthMultiplierAt works on it).
   const TearStrengthMap& map() const { return map_; }
+  // The same, shared: one copy per change of the map, not per call (the viewport's tint reads it
+  // every frame, and uploads it again only when the copy is a new one).
+  std::shared_ptr<const TearStrengthMap> sharedMap() const;
   const std::vector<std::uint8_t>& grey() const { return grey_; }
 
   void beginStroke();
@@ -91,6 +94,7 @@ class StrengthPainting {
   void refresh();                          // grey_ -> map_'s grey and multipliers
 
   TearStrengthMap map_;
+  mutable std::shared_ptr<const TearStrengthMap> shared_;  // sharedMap's copy of map_ (none: stale)
   std::vector<std::uint8_t> grey_;
   std::vector<std::uint8_t> base_;         // erasing goes back to these
   std::vector<std::uint8_t> strokeStart_;  // the grey levels when the stroke began
