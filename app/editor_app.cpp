@@ -122,6 +122,12 @@ void viewportMouse(editor::EditorSession& session, editor::EditorUi& ui, ui::Orb
     ImGui::GetForegroundDrawList()->AddRectFilled(a, b, IM_COL32(255, 165, 0, 40));
     ImGui::GetForegroundDrawList()->AddRect(a, b, IM_COL32(230, 130, 0, 255));
   }
+  if (const auto& brush = interaction.brushOutline(); brush && overScene) {  // the tear strength brush
+    const ImVec2 c(static_cast<float>((rect.x + brush->x) / scale), static_cast<float>((rect.y + brush->y) / scale));
+    const float r = static_cast<float>(brush->radiusPixels / scale);
+    ImGui::GetForegroundDrawList()->AddCircle(c, r, IM_COL32(20, 20, 20, 200), 48, 2.0f);
+    ImGui::GetForegroundDrawList()->AddCircle(c, r, IM_COL32(255, 255, 255, 220), 48, 1.0f);
+  }
   const bool throwKey = !io.WantCaptureKeyboard && ImGui::IsKeyPressed(GLFW_KEY_B);
   if (ui.panels.throwBallRequested || (throwKey && overScene)) {
     const double x = ui.panels.throwBallRequested ? 0.5 * rect.width : mouse.x;

@@ -58,6 +58,15 @@ void cameraRay(const OrbitCamera& camera, double x, double y, int width, int hei
   outDir = (forward + ndcX * tanY * aspect * side + ndcY * tanY * up).normalized();
 }
 
+double pixelsPerMetreAt(const OrbitCamera& camera, const Vec3& p, int height) {
+  const Eigen::Matrix4d view = camera.view().cast<double>();
+  const Vec3 forward = -view.block<1, 3>(2, 0).transpose();
+  const double depth = (p - camera.eye()).dot(forward);
+  if (!(depth > 0.0)) return 0.0;
+  // The image's height spans 2 depth tan(fovY / 2) metres at that depth.
+  return std::max(height, 1) / (2.0 * depth * std::tan(radians(camera.fovYDeg) / 2.0));
+}
+
 OrbitCamera frameBox(const Vec3& boxMin, const Vec3& boxMax, double aspect, double yawDeg, double pitchDeg) {
   OrbitCamera camera;
   camera.yawDeg = yawDeg;

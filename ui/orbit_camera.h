@@ -26,6 +26,10 @@ struct OrbitCamera {
 // top-left corner (where the mouse is): origin at the eye, unit direction. For picking.
 void cameraRay(const OrbitCamera& camera, double x, double y, int width, int height, Vec3& outOrigin, Vec3& outDir);
 
+// How many pixels of a height-pixel image one metre spans at world point p, across the view (a
+// length facing the camera at p's depth); 0 for a point at or behind the eye.
+double pixelsPerMetreAt(const OrbitCamera& camera, const Vec3& p, int height);
+
 // A camera at the given yaw and pitch that keeps the whole box [boxMin, boxMax] in view (every
 // corner inside the view, with a small margin), for an image of the given aspect.
 OrbitCamera frameBox(const Vec3& boxMin, const Vec3& boxMax, double aspect, double yawDeg = 30.0,

@@ -76,6 +76,42 @@ struct FacingSheet : test::FacingSheet {
   }
 };
 
+// The brush's outline: over the cloth with a brush set, a circle round the cursor whose radius is
+// the brush's on the sheet (the facing sheet's 1 m spans its width in pixels, so a 0.1 m brush
+// spans a tenth of that); off the cloth, or without a brush, none; a bigger brush, a bigger circle.
+TEST(StrengthPaintingInTheEditor, TheBrushOutlineIsDrawnAtTheBrushsSizeOnTheCloth) {
+  FacingSheet s;
+  ViewportInteraction interaction;
+  ui::MouseState mouse;
+  mouse.x = 0.5 * FacingSheet::kWidth;
+  mouse.y = 0.5 * FacingSheet::kHeight;
+  interaction.update(*s.session, s.camera, mouse, {}, FacingSheet::kWidth, FacingSheet::kHeight);
+  EXPECT_FALSE(interaction.brushOutline()) << "no brush, no outline";
+
+  StrengthBrush brush;
+  brush.radius = 0.1;
+  interaction.setPaintBrush(&brush);
+  interaction.update(*s.session, s.camera, mouse, {}, FacingSheet::kWidth, FacingSheet::kHeight);
+  ASSERT_TRUE(interaction.brushOutline());
+  EXPECT_DOUBLE_EQ(interaction.brushOutline()->x, mouse.x);
+  EXPECT_DOUBLE_EQ(interaction.brushOutline()->y, mouse.y);
+  // The sheet's width on screen, from the material points under two pixels a known distance apart.
+  const double pixels = 100.0;
+  const double metres = (s.materialPointAt(mouse.x + pixels, mouse.y) - s.materialPointAt(mouse.x, mouse.y)).norm();
+  ASSERT_GT(metres, 0.0);
+  EXPECT_NEAR(interaction.brushOutline()->radiusPixels, 0.1 * pixels / metres, 0.05 * 0.1 * pixels / metres);
+
+  brush.radius = 0.2;
+  interaction.update(*s.session, s.camera, mouse, {}, FacingSheet::kWidth, FacingSheet::kHeight);
+  ASSERT_TRUE(interaction.brushOutline());
+  EXPECT_NEAR(interaction.brushOutline()->radiusPixels, 0.2 * pixels / metres, 0.05 * 0.2 * pixels / metres);
+
+  mouse.x = 5.0;  // the corner of the view: no cloth there
+  mouse.y = 5.0;
+  interaction.update(*s.session, s.camera, mouse, {}, FacingSheet::kWidth, FacingSheet::kHeight);
+  EXPECT_FALSE(interaction.brushOutline()) << "off the cloth";
+}
+
 TEST(StrengthPaintingInTheEditor, AStrokeInTheViewportReachesTheRunningWorldAndUndoTakesItBack) {
   FacingSheet s;
   const Vec2 painted = s.materialPointAt(400, 300), unpainted = s.materialPointAt(400, 360);

@@ -52,6 +52,24 @@ bool ViewportInteraction::update(EditorSession& session, const ui::OrbitCamera& 
                              pick);
   }
 
+  // The brush's outline under the cursor. As with the tags' hover, a running step is not waited
+  // for: the outline follows the cursor at the size the last pick found.
+  if (paintBrush_ == nullptr || tags != nullptr || (mode_ != Mode::Idle && mode_ != Mode::Paint)) {
+    brushOutline_.reset();
+  } else if (!session.stepping()) {
+    const auto hit = pickCloth(session.worldBetweenSteps(), origin, dir);
+    if (hit || mode_ == Mode::Paint) {
+      const double perMetre = hit ? ui::pixelsPerMetreAt(camera, hit->point, height)
+                                  : (brushOutline_ && paintBrush_->radius > 0.0 ? brushOutline_->radiusPixels / paintBrush_->radius : 0.0);
+      brushOutline_ = BrushOutline{mouse.x, mouse.y, paintBrush_->radius * perMetre};
+    } else {
+      brushOutline_.reset();
+    }
+  } else if (brushOutline_) {
+    brushOutline_->x = mouse.x;
+    brushOutline_->y = mouse.y;
+  }
+
   if (pressed) {
     // A press picks on the world itself: it waits for the step in flight (not for every owed
     // step), so the click lands on what was drawn, and is never lost.

@@ -40,6 +40,14 @@ struct DragBox {
   double x0 = 0, y0 = 0, x1 = 0, y1 = 0;
 };
 
+// Where a left drag would paint now, for the app to draw as a circle: the cursor (viewport
+// pixels) and the brush's radius in pixels there. The radius is the brush's material radius at the
+// cursor's depth, taken at rest scale (a stretched cloth paints a little less wide on screen).
+struct BrushOutline {
+  double x = 0, y = 0;
+  double radiusPixels = 0;
+};
+
 class ViewportInteraction {
  public:
   explicit ViewportInteraction(ViewportSettings settings = {}) : settings_(settings) {}
@@ -57,6 +65,8 @@ class ViewportInteraction {
   // The brush a left drag on a cloth paints with (not owned; none: the drag grabs).
   void setPaintBrush(const StrengthBrush* brush) { paintBrush_ = brush; }
   bool painting() const { return mode_ == Mode::Paint; }
+  // With a brush set and the cursor over a cloth (or painting): the brush's outline.
+  const std::optional<BrushOutline>& brushOutline() const { return brushOutline_; }
   // In tag mode: the tool's feature a click would toggle now (drawn highlighted), if any.
   const std::optional<TagTarget>& hovered() const { return hovered_; }
   // The box being dragged in tag mode (Shift + drag), for the app to draw.
@@ -80,6 +90,7 @@ class ViewportInteraction {
   const StrengthBrush* paintBrush_ = nullptr;
   int paintCloth_ = -1;
   Vec2 lastDab_ = Vec2::Zero();
+  std::optional<BrushOutline> brushOutline_;
 };
 
 }  // namespace weft::editor
