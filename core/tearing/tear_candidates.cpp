@@ -277,7 +277,7 @@ double angleFromWarpDeg(double angle, double weftAngleRad) {
 void findTearCandidates(const ClothMesh& mesh, const std::vector<TriangleCorners>& corners,
                         const std::vector<Mat2>& triangleStress, const TearTable& table,
                         double weftAngleRad, const TearSearchSettings& settings, std::vector<TearCandidate>& out,
-                        TearSearchCounts& counts) {
+                        TearSearchCounts& counts, const TearStrengthMap* strengthMap) {
   out.clear();
   // The triangles around each vertex in compressed rows (one allocation, not one per vertex).
   const int n = mesh.vertexCount();
@@ -295,11 +295,19 @@ void findTearCandidates(const ClothMesh& mesh, const std::vector<TriangleCorners
     stressFan(mesh, v, std::span<const int>(around.data() + rowStart[v], around.data() + rowStart[v + 1]), corners,
               triangleStress, fan);
   };
-  auto bestLineOf = [&](const StressFan& fan) { return bestLineAt(fan, table, weftAngleRad, settings, 1.0, counts); };
+  auto restPositionOf = [&](int v) {
+    const Triangle& first = mesh.tris[around[rowStart[v]]];
+    return first.rest[first.v[0] == v ? 0 : first.v[1] == v ? 1 : 2];
+  };
+  auto scaleOf = [&](int v, const StressFan& fan) {
+    return strengthMap != nullptr ? StrengthScale(1.0, strengthMap, restPositionOf(v), !fan.closed) : StrengthScale(1.0);
+  };
+  auto bestLineOf = [&](int v, const StressFan& fan) {
+    return bestLineAt(fan, table, weftAngleRad, settings, scaleOf(v, fan), counts);
+  };
   auto candidateOf = [&](int v, const StressFan& fan, TearCandidate best) {
     best.vertex = v;
-    const Triangle& first = mesh.tris[around[rowStart[v]]];
-    best.restPosition = first.rest[first.v[0] == v ? 0 : first.v[1] == v ? 1 : 2];
+    best.restPosition = restPositionOf(v);
     best.ray = !fan.closed;
     return best;
   };
@@ -313,7 +321,8 @@ void findTearCandidates(const ClothMesh& mesh, const std::vector<TriangleCorners
     double bound = std::numeric_limits<double>::infinity();
     if (settings.skipByBound) {
       fanOf(v, fan);
-      bound = separationStrengthBound(fan) * (1.0 + 1e-9) / weakest;
+      // The map lowers a line's strength at most to its lowest multiplier near the vertex.
+      bound = separationStrengthBound(fan) * (1.0 + 1e-9) / (weakest * scaleOf(v, fan).lowest());
       if (bound < 1.0) {
         ++counts.skipped;
         continue;
@@ -334,7 +343,7 @@ void findTearCandidates(const ClothMesh& mesh, const std::vector<TriangleCorners
         continue;
       }
       fanOf(v, fan);
-      const TearCandidate best = candidateOf(v, fan, bestLineOf(fan));
+      const TearCandidate best = candidateOf(v, fan, bestLineOf(v, fan));
       if (best.ratio > winner.ratio || (best.ratio == winner.ratio && best.vertex < winner.vertex)) winner = best;
     }
     if (winner.ratio > 1.0) out.push_back(winner);
@@ -342,7 +351,7 @@ void findTearCandidates(const ClothMesh& mesh, const std::vector<TriangleCorners
   }
   for (const auto& [bound, v] : open) {
     fanOf(v, fan);
-    const TearCandidate best = bestLineOf(fan);
+    const TearCandidate best = bestLineOf(v, fan);
     if (best.ratio > 1.0) out.push_back(candidateOf(v, fan, best));
   }
 }

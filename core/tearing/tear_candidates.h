@@ -90,10 +90,12 @@ std::vector<TearCandidate> linesAboveOneAt(const StressFan& fan, const TearTable
 
 // The best line of every vertex whose best omega exceeds 1, in vertex order (with onlyTheBest,
 // just the one selectTears would choose first).
-// `corners` is triangleCorners(mesh), kept up to date (separation_strength.h).
+// `corners` is triangleCorners(mesh), kept up to date (separation_strength.h). With a strength
+// map (prepared for this mesh's material bounds), each line's strength is scaled by the map's mean
+// along it, as the tear stage's search does.
 void findTearCandidates(const ClothMesh& mesh, const std::vector<TriangleCorners>& corners,
                         const std::vector<Mat2>& triangleStress, const TearTable& table,
                         double weftAngleRad, const TearSearchSettings& settings, std::vector<TearCandidate>& out,
-                        TearSearchCounts& counts);
+                        TearSearchCounts& counts, const TearStrengthMap* strengthMap = nullptr);
 
 }  // namespace weft

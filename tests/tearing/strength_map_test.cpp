@@ -16,10 +16,12 @@
 
 #include "scene/scene_json.h"
 #include "sim/world.h"
+#include "mesh/grid.h"
 #include "support/tear_measures.h"
 #include "support/tear_scenes.h"
 #include "support/temp_dir.h"
 #include "tearing/strength_map.h"
+#include "tearing/tear_candidates.h"
 #include "util/input_error.h"
 
 namespace weft {
@@ -202,6 +204,46 @@ TEST(StrengthMap, TheSearchBoundsSkipNothingAPaintedLineWouldTear) {
     EXPECT_EQ(logs[0][k].vertex, logs[1][k].vertex) << k;
     EXPECT_EQ(logs[0][k].angleDeg, logs[1][k].angleDeg) << k;
     EXPECT_EQ(logs[0][k].time, logs[1][k].time) << k;
+  }
+}
+
+// The reference search (findTearCandidates, which tests compare the stage's choices with) reads
+// the map as the stage does: under a uniform stress that tears nothing unpainted, every vertex it
+// finds lies on the painted band with a line that stays in it, the same with and without the bounds
+// that skip vertices; without the map it finds none.
+TEST(StrengthMap, TheReferenceSearchReadsTheMapAsTheStageDoes) {
+  GridSpec spec;
+  spec.resolutionX = spec.resolutionY = 25;  // a row of vertices at y = 0.5, on the band
+  const ClothMesh mesh = makeGrid(spec);
+  TearStrengthMap map = bandMap(0.5, 0.015, 0.2);
+  prepareStrengthMap(map, Vec2(0, 0), Vec2(1, 1));
+  const TearTable table = test::tearTable({1.0}, 200.0);  // the unpainted sheet at omega 0.5
+  const std::vector<Mat2> stress(mesh.tris.size(), 100.0 * Mat2::Identity());
+  std::vector<std::vector<TearCandidate>> found;
+  for (const bool skip : {true, false}) {
+    TearSearchSettings settings;
+    settings.lines = CandidateLines::Dense;
+    settings.skipByBound = skip;
+    std::vector<TearCandidate> out;
+    TearSearchCounts counts;
+    findTearCandidates(mesh, triangleCorners(mesh), stress, table, 0.0, settings, out, counts, &map);
+    found.push_back(out);
+    std::vector<TearCandidate> unpainted;
+    findTearCandidates(mesh, triangleCorners(mesh), stress, table, 0.0, settings, unpainted, counts);
+    EXPECT_TRUE(unpainted.empty());
+  }
+  ASSERT_FALSE(found[0].empty());
+  ASSERT_EQ(found[0].size(), found[1].size());
+  for (std::size_t k = 0; k < found[0].size(); ++k) {
+    const TearCandidate& c = found[0][k];
+    EXPECT_EQ(c.vertex, found[1][k].vertex);
+    EXPECT_EQ(c.angle, found[1][k].angle);
+    EXPECT_LT(std::abs(c.restPosition.y() - 0.5), 0.05) << "vertex " << c.vertex;
+    // Along the band: under this isotropic stress every line that stays inside the band over the
+    // map's reach is as weak (x0.2), so the line is one of those, at omega 100 / (200 x 0.2).
+    EXPECT_NEAR(strengthMultiplierAlong(map, c.restPosition, c.angle, false), 0.2, 1e-3) << "vertex " << c.vertex;
+    EXPECT_LT(std::abs(std::sin(c.angle)), std::sin(degToRad(15.0))) << "vertex " << c.vertex << " angle " << c.angle;
+    EXPECT_NEAR(c.ratio, 2.5, 0.025);  // 1%: the sheet's side borders read their open fans
   }
 }
 
