@@ -14,9 +14,9 @@
 #include <nlohmann/json.hpp>
 #include <stb_image_write.h>
 
+#include "mesh/grid.h"
 #include "scene/scene_json.h"
 #include "sim/world.h"
-#include "mesh/grid.h"
 #include "support/tear_measures.h"
 #include "support/tear_scenes.h"
 #include "support/temp_dir.h"

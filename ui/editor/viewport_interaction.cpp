@@ -56,18 +56,13 @@ bool ViewportInteraction::update(EditorSession& session, const ui::OrbitCamera& 
   // for: the outline follows the cursor at the size the last pick found.
   if (paintBrush_ == nullptr || tags != nullptr || (mode_ != Mode::Idle && mode_ != Mode::Paint)) {
     brushOutline_.reset();
-  } else if (!session.stepping()) {
-    const auto hit = pickCloth(session.worldBetweenSteps(), origin, dir);
-    if (hit || mode_ == Mode::Paint) {
-      const double perMetre = hit ? ui::pixelsPerMetreAt(camera, hit->point, height)
-                                  : (brushOutline_ && paintBrush_->radius > 0.0 ? brushOutline_->radiusPixels / paintBrush_->radius : 0.0);
-      brushOutline_ = BrushOutline{mouse.x, mouse.y, paintBrush_->radius * perMetre};
-    } else {
-      brushOutline_.reset();
-    }
-  } else if (brushOutline_) {
-    brushOutline_->x = mouse.x;
+  } else if (const auto hit = session.stepping() ? std::nullopt : pickCloth(session.worldBetweenSteps(), origin, dir)) {
+    brushOutline_ = BrushOutline{mouse.x, mouse.y, paintBrush_->radius * ui::pixelsPerMetreAt(camera, hit->point, height)};
+  } else if (brushOutline_ && (session.stepping() || mode_ == Mode::Paint)) {
+    brushOutline_->x = mouse.x;  // a stroke that slips off the cloth keeps its outline's size
     brushOutline_->y = mouse.y;
+  } else {
+    brushOutline_.reset();
   }
 
   if (pressed) {
