@@ -110,9 +110,22 @@ ElasticSummary evaluateElasticForces(const Cloth& cloth, const std::vector<Vec3>
   {
     StageTimer timer(profile, "membrane");
     const PreparedElasticity law = prepareElasticity(cloth.material.elasticity);
-    auto evaluate = [&](int t, MembraneContribution& out) {
+    const MembraneAhead* ahead =
+        options.ahead != nullptr && options.ahead->serves(cloth.material.elasticity) && options.ahead->mode() == mode
+            ? options.ahead
+            : nullptr;
+    // The element's contribution: the one evaluated ahead when it holds exactly this element at
+    // these positions, else evaluated into `scratch`.
+    auto contributionOf = [&](int t, MembraneContribution& scratch) -> const MembraneContribution& {
       const MembraneElement& element = cloth.membranes[t];
-      evaluateMembrane(element, law, x[element.v[0]], x[element.v[1]], x[element.v[2]], mode, out);
+      const Vec3& xa = x[element.v[0]];
+      const Vec3& xb = x[element.v[1]];
+      const Vec3& xc = x[element.v[2]];
+      if (ahead != nullptr) {
+        if (const MembraneContribution* found = ahead->find(t, element, xa, xb, xc)) return *found;
+      }
+      evaluateMembrane(element, law, xa, xb, xc, mode, scratch);
+      return scratch;
     };
     auto add = [&](int t, const MembraneContribution& r) {
       const MembraneElement& element = cloth.membranes[t];
@@ -122,16 +135,15 @@ ElasticSummary evaluateElasticForces(const Cloth& cloth, const std::vector<Vec3>
       if (mode != HessianMode::None) addElementHessian<3>(r.hessian, element.v, workspace.membraneBlockStart[t], *hessian);
     };
     if (buffered) {
+      // Evaluated in parallel into per-element buffers (or found in the cache), then added in order.
       workspace.membrane.resize(triangleCount);
+      workspace.membraneTaken.resize(triangleCount);
 #pragma omp parallel for num_threads(options.threads) schedule(static)
-      for (int t = 0; t < triangleCount; ++t) evaluate(t, workspace.membrane[t]);
-      for (int t = 0; t < triangleCount; ++t) add(t, workspace.membrane[t]);
+      for (int t = 0; t < triangleCount; ++t) workspace.membraneTaken[t] = &contributionOf(t, workspace.membrane[t]);
+      for (int t = 0; t < triangleCount; ++t) add(t, *workspace.membraneTaken[t]);
     } else {
       MembraneContribution contribution;
-      for (int t = 0; t < triangleCount; ++t) {
-        evaluate(t, contribution);
-        add(t, contribution);
-      }
+      for (int t = 0; t < triangleCount; ++t) add(t, contributionOf(t, contribution));
     }
   }
   if (options.bending && !cloth.hinges.empty()) {

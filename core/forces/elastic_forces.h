@@ -10,6 +10,7 @@
 
 #include "forces/bending.h"
 #include "forces/membrane.h"
+#include "forces/membrane_ahead.h"
 #include "integrate/system_matrix.h"
 #include "sim/stage_profile.h"
 
@@ -21,6 +22,9 @@ struct ElasticOptions {
   bool bending = true;                     // evaluate bending hinges
   HessianMode hessian = HessianMode::None; // None: energy and forces only
   int threads = 1;
+  // The membrane contributions evaluated at the end of the last step (membrane_ahead.h): each
+  // triangle it holds at exactly these positions is taken from it instead of evaluated. Null: none.
+  const MembraneAhead* ahead = nullptr;
 };
 
 struct ElasticSummary {
@@ -35,6 +39,7 @@ struct ElasticWorkspace {
   // goes, in the same order and with the same arithmetic, so the sums are identical).
   std::vector<MembraneContribution> membrane;
   std::vector<HingeContribution> bending;
+  std::vector<const MembraneContribution*> membraneTaken;  // per triangle: its buffer above, or the cache's entry
 
   // Where each element's 3x3 Hessian blocks sit among the system matrix's values: entry i*N + j
   // is the offset of column 0 of block (v_i, v_j); the block's other columns follow at the length

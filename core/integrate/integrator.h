@@ -10,9 +10,11 @@
 //    solve the general implicit step of implicit_step.h), with one backward Euler step wherever
 //    its two-step history is invalid.
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "forces/grab_spring.h"
+#include "forces/membrane_ahead.h"
 #include "mesh/topology_change.h"
 #include "scene/scene.h"
 #include "sim/stage_profile.h"
@@ -60,6 +62,9 @@ struct StepInputs {
   // The implicit integrators' step form (implicit_step.h); null: backward Euler from the cloth's
   // state. Set by Bdf2Integrator.
   const ImplicitStep* form = nullptr;
+  // This cloth's membrane contributions evaluated at the end of the last step
+  // (forces/membrane_ahead.h), or null.
+  const MembraneAhead* membraneAhead = nullptr;
 };
 
 class Integrator {
@@ -81,6 +86,10 @@ class Integrator {
   // World::clone: a copy of the world steps on from the same state without the memory of a
   // factorization per copy.
   virtual std::unique_ptr<Integrator> copyWithoutCaches(const SolverSpec& spec) const;
+  // The Hessian mode in which the next advance evaluates the membrane at the cloth's positions as
+  // they stand, if it does (a cache of that evaluation made at the end of a step then serves it,
+  // forces/membrane_ahead.h); none when it evaluates elsewhere first.
+  virtual std::optional<HessianMode> membraneModeAtStart() const { return std::nullopt; }
 };
 
 std::unique_ptr<Integrator> makeIntegrator(const SolverSpec& spec);

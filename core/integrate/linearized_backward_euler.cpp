@@ -25,6 +25,7 @@ void LinearizedBackwardEuler::advance(Cloth& cloth, const StepInputs& in, StageP
   options.bending = in.bending;
   options.hessian = HessianMode::Definite;
   options.threads = in.threads;
+  options.ahead = in.membraneAhead;  // HessianMode::Definite: as membraneModeAtStart says
   evaluateElasticForces(cloth, baseX, options, system_.elastic, system_.internalForce, &system_.matrix, profile);
   if (in.grab != nullptr) addGrabForce(*in.grab, baseX, system_.internalForce, profile);
 

@@ -13,6 +13,8 @@ class LinearizedBackwardEuler final : public Integrator {
   void topologyChanged(const Cloth& cloth, const TopologyChange& change) override {
     system_.topologyChanged(cloth, change);
   }
+  // Unless BDF2 hands it a form (then it evaluates at the extrapolated state).
+  std::optional<HessianMode> membraneModeAtStart() const override { return HessianMode::Definite; }
 
  private:
   // The impulse each held vertex (integrator.h) received from its obstacle in the solve.

@@ -46,11 +46,13 @@ void World::step() {
       inputs.bending = w.bendingRuns(w.cloths[c]);
       inputs.heldVertices = w.contact->heldVertices(static_cast<int>(c));
       inputs.grab = w.grabOn(c);
+      inputs.membraneAhead = w.membraneAheadOf(c);
       w.integrators[c]->advance(w.cloths[c], inputs, w.profile, w.stats);
     }
     w.contact->applyHeldReactions(w.cloths, w.obstacles, h);
     w.contact->resolve(w.cloths, w.startPositions, w.obstacles, h, w.profile);
     w.endObstacles();
+    w.evaluateMembraneAhead(inputs.threads);
     w.tear(inputs.time + h, h);
   }
   ++w.steps;

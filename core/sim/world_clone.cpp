@@ -10,7 +10,9 @@
 //    the same order (pair_cache.h);
 //  - the tear stage: its log, statistics and crack-tip overshoots; the search's table pointer is
 //    set at the start of every search;
-//  - the integrators: Integrator::copyWithoutCaches (integrator.h).
+//  - the integrators: Integrator::copyWithoutCaches (integrator.h);
+//  - the membrane evaluated ahead: plain values, each entry keyed by the positions it was
+//    evaluated at (membrane_ahead.h), so the copy's next step reads what it would evaluate.
 #include "sim/world.h"
 #include "sim/world_impl.h"
 
@@ -23,6 +25,7 @@ World::Impl::Impl(const Impl& other)
       contact(std::make_unique<ContactStage>(*other.contact)),
       tearing(std::make_unique<TearStage>(*other.tearing)),
       startPositions(other.startPositions),
+      membraneAhead(other.membraneAhead),
       time(other.time),
       steps(other.steps),
       timeOrigin(other.timeOrigin),

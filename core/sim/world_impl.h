@@ -26,6 +26,9 @@ struct World::Impl {
   std::unique_ptr<ContactStage> contact;
   std::unique_ptr<TearStage> tearing;
   std::vector<std::vector<Vec3>> startPositions;  // each cloth's positions at the start of the step (contact)
+  // Per cloth: its next step's membrane stage, evaluated at the end of this one when the cloth
+  // tears (forces/membrane_ahead.h); the tear stage reads its stresses.
+  std::vector<MembraneAhead> membraneAhead;
   double time = 0.0;
   long long steps = 0;
   // time() = timeOrigin + (steps - stepsAtOrigin) dt: no drift from summing dt, and a live change
@@ -70,11 +73,28 @@ struct World::Impl {
   void saveStartPositions() {
     for (size_t c = 0; c < cloths.size(); ++c) startPositions[c] = cloths[c].mesh.x;
   }
+  // The next step's membrane evaluation, done now for each cloth that can tear and whose
+  // integrator evaluates the membrane where the cloth stands: the tear stage reads its stresses.
+  // Any other cloth's cache is emptied.
+  void evaluateMembraneAhead(int threads) {
+    membraneAhead.resize(cloths.size());
+    for (size_t c = 0; c < cloths.size(); ++c) {
+      const std::optional<HessianMode> mode = integrators[c]->membraneModeAtStart();
+      if (tearing->runs() && cloths[c].material.tearTable && mode) {
+        membraneAhead[c].evaluate(cloths[c], *mode, threads, profile);
+      } else {
+        membraneAhead[c].clear();
+      }
+    }
+  }
+  const MembraneAhead* membraneAheadOf(size_t cloth) const {
+    return cloth < membraneAhead.size() ? &membraneAhead[cloth] : nullptr;
+  }
   // Tears what must tear, and has whatever depends on a torn cloth's topology patched with what
   // changed (the matrix pattern, the collision topology and broad phase).
   void tear(double time, double dt) {
     if (!tearing->runs()) return;
-    const std::vector<TopologyChange> changes = tearing->run(cloths, time, dt, profile);
+    const std::vector<TopologyChange> changes = tearing->run(cloths, membraneAhead, time, dt, profile);
     for (size_t c = 0; c < cloths.size(); ++c) {
       if (changes[c].empty()) continue;
       integrators[c]->topologyChanged(cloths[c], changes[c]);

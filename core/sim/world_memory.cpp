@@ -133,6 +133,7 @@ std::size_t TearStage::heapBytes() const {
 std::size_t World::approximateBytes() const {
   const Impl& w = *impl_;
   return sizeof(World) + sizeof(Impl) + heapBytes(w.cloths) + heapBytes(w.obstacles) + heapBytes(w.startPositions) +
+         heapBytes(w.membraneAhead) +
          sizeof(ContactStage) + w.contact->heapBytes() + sizeof(TearStage) + w.tearing->heapBytes();
 }
 

@@ -128,19 +128,21 @@ void TearStage::holdIncubating(const Cloth& cloth, const std::vector<TriangleCor
   }
 }
 
-std::vector<TopologyChange> TearStage::run(std::vector<Cloth>& cloths, double time, double dt, StageProfile& profile) {
+std::vector<TopologyChange> TearStage::run(std::vector<Cloth>& cloths, const std::vector<MembraneAhead>& ahead,
+                                           double time, double dt, StageProfile& profile) {
   std::vector<TopologyChange> changed(cloths.size());
   if (!runs_) return changed;
   if (corners_.size() != cloths.size()) corners_.resize(cloths.size());
   if (nonlocal_.size() != cloths.size()) nonlocal_.resize(cloths.size());
   for (std::size_t c = 0; c < cloths.size(); ++c) {
     if (!cloths[c].material.tearTable) continue;
-    changed[c] = tearCloth(cloths[c], static_cast<int>(c), time, dt, profile);
+    changed[c] = tearCloth(cloths[c], static_cast<int>(c), c < ahead.size() ? &ahead[c] : nullptr, time, dt, profile);
   }
   return changed;
 }
 
-TopologyChange TearStage::tearCloth(Cloth& cloth, int clothIndex, double time, double dt, StageProfile& profile) {
+TopologyChange TearStage::tearCloth(Cloth& cloth, int clothIndex, const MembraneAhead* ahead, double time, double dt,
+                                   StageProfile& profile) {
   TopologyChange changed;
   const TearTable& table = *cloth.material.tearTable;
   TearGuards guards;
@@ -157,7 +159,7 @@ TopologyChange TearStage::tearCloth(Cloth& cloth, int clothIndex, double time, d
   std::unordered_map<int, Incubating> overloadedNow;
   {
     StageTimer timer(profile, "tear_stress");
-    tensileStresses(cloth, localStress_);
+    tensileStresses(cloth, ahead, localStress_);
     if (spec_.stressLength > 0.0) {
       // Only where some triangle could reach a run-on tip's share of the weakest strength (the
       // largest principal stress bounds zeta within pi: separation_strength.h's bound).

@@ -26,6 +26,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "forces/membrane_ahead.h"
 #include "mesh/topology_change.h"
 #include "scene/scene.h"
 #include "sim/stage_profile.h"
@@ -50,14 +51,21 @@ class TearStage {
   bool runs() const { return runs_; }
   // Tears what must tear in a step of length dt ending at `time`; returns, per cloth, what all its
   // tears of this step changed together (empty when it did not tear).
-  std::vector<TopologyChange> run(std::vector<Cloth>& cloths, double time, double dt, StageProfile& profile);
+  // `ahead`: per cloth, its membrane evaluated at the current positions (forces/membrane_ahead.h),
+  // whose stresses are read instead of evaluated again (may be empty or hold stale entries).
+  std::vector<TopologyChange> run(std::vector<Cloth>& cloths, const std::vector<MembraneAhead>& ahead, double time,
+                                  double dt, StageProfile& profile);
+  std::vector<TopologyChange> run(std::vector<Cloth>& cloths, double time, double dt, StageProfile& profile) {
+    return run(cloths, {}, time, dt, profile);
+  }
   const std::vector<TearRecord>& log() const { return log_; }
   const TearStats& stats() const { return stats_; }
   std::size_t heapBytes() const;  // util/heap_bytes.h (defined in sim/world_memory.cpp)
 
  private:
   // One cloth's step; returns what it changed.
-  TopologyChange tearCloth(Cloth& cloth, int clothIndex, double time, double dt, StageProfile& profile);
+  TopologyChange tearCloth(Cloth& cloth, int clothIndex, const MembraneAhead* ahead, double time, double dt,
+                           StageProfile& profile);
   struct Incubating;
   // Whether the vertex has been overloaded for the incubation time at the end of this step.
   bool incubated(const Incubating& vertex, double time, double dt) const;

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "forces/membrane.h"
+#include "forces/membrane_ahead.h"
 #include "sim/cloth.h"
 
 namespace weft {
@@ -43,28 +44,40 @@ Mat2 stressInMaterialFrame(const Vec3& stressUV, double weftAngleRad) {
 
 namespace {
 
+// sigma+ in the material frame of a membrane stress in the weft/warp frame.
+Mat2 tensileOf(const Vec3& stressUV, const Mat2& rotation) {
+  const Mat2 stress = stressInMaterialFrame(stressUV, rotation);
+  // A non-finite stress (a blown-up step) must not tear: it is treated as no stress.
+  return stress.allFinite() ? tensilePart(stress) : Mat2::Zero();
+}
+
 Mat2 tensileStressOf(const Cloth& cloth, const PreparedElasticity& law, const Mat2& rotation, int t,
                      MembraneContribution& contribution) {
   const ClothMesh& mesh = cloth.mesh;
   const MembraneElement& element = cloth.membranes[t];
   evaluateMembrane(element, law, mesh.x[element.v[0]], mesh.x[element.v[1]], mesh.x[element.v[2]], HessianMode::None,
                    contribution);
-  const Mat2 stress = stressInMaterialFrame(contribution.stress, rotation);
-  // A non-finite stress (a blown-up step) must not tear: it is treated as no stress.
-  return stress.allFinite() ? tensilePart(stress) : Mat2::Zero();
+  return tensileOf(contribution.stress, rotation);
 }
 
 }  // namespace
 
-void tensileStresses(const Cloth& cloth, std::vector<Mat2>& outStress) {
+void tensileStresses(const Cloth& cloth, const MembraneAhead* ahead, std::vector<Mat2>& outStress) {
   const PreparedElasticity law = prepareElasticity(cloth.material.elasticity);
   outStress.resize(cloth.mesh.tris.size());
   const Mat2 rotation = weftToMaterial(cloth.weftAngleRad);  // once: a sine and cosine per triangle cost a tenth
+  if (ahead != nullptr && !ahead->serves(cloth.material.elasticity)) ahead = nullptr;
   MembraneContribution contribution;
   for (int t = 0; t < cloth.mesh.triangleCount(); ++t) {
-    outStress[t] = tensileStressOf(cloth, law, rotation, t, contribution);
+    const MembraneElement& element = cloth.membranes[t];
+    const std::vector<Vec3>& x = cloth.mesh.x;
+    const MembraneContribution* found =
+        ahead != nullptr ? ahead->find(t, element, x[element.v[0]], x[element.v[1]], x[element.v[2]]) : nullptr;
+    outStress[t] = found != nullptr ? tensileOf(found->stress, rotation) : tensileStressOf(cloth, law, rotation, t, contribution);
   }
 }
+
+void tensileStresses(const Cloth& cloth, std::vector<Mat2>& outStress) { tensileStresses(cloth, nullptr, outStress); }
 
 void tensileStresses(const Cloth& cloth, const std::vector<int>& triangles, std::vector<Mat2>& ioStress) {
   const PreparedElasticity law = prepareElasticity(cloth.material.elasticity);

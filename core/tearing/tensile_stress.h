@@ -10,6 +10,7 @@
 namespace weft {
 
 struct Cloth;
+class MembraneAhead;
 
 // The tensile part of a 2x2 symmetric stress: its eigen-decomposition with every negative
 // principal stress set to zero.
@@ -23,6 +24,9 @@ Mat2 weftToMaterial(double weftAngleRad);
 Mat2 stressInMaterialFrame(const Vec3& stressUV, const Mat2& weftToMaterial);
 
 // sigma+ of every triangle of the cloth at its current positions (N/m), in the material frame.
+// `ahead` (or null): the membrane evaluated at these positions already (forces/membrane_ahead.h);
+// a triangle it holds is read from it, the others evaluated.
+void tensileStresses(const Cloth& cloth, const MembraneAhead* ahead, std::vector<Mat2>& outStress);
 void tensileStresses(const Cloth& cloth, std::vector<Mat2>& outStress);
 // The same for the listed triangles only (after a tear changed them); `ioStress` grows to the
 // mesh's triangle count.
