@@ -11,8 +11,9 @@
 //  - the tear stage: its log, statistics and crack-tip overshoots; the search's table pointer is
 //    set at the start of every search;
 //  - the integrators: Integrator::copyWithoutCaches (integrator.h);
-//  - the membrane evaluated ahead: plain values, each entry keyed by the positions it was
-//    evaluated at (membrane_ahead.h), so the copy's next step reads what it would evaluate.
+//  - not the membrane evaluated ahead (membrane_ahead.h: ~550 bytes a triangle, which the
+//    timeline would keep per frame): the copy's first step evaluates it, which gives the same
+//    numbers.
 #include "sim/world.h"
 #include "sim/world_impl.h"
 
@@ -25,7 +26,6 @@ World::Impl::Impl(const Impl& other)
       contact(std::make_unique<ContactStage>(*other.contact)),
       tearing(std::make_unique<TearStage>(*other.tearing)),
       startPositions(other.startPositions),
-      membraneAhead(other.membraneAhead),
       time(other.time),
       steps(other.steps),
       timeOrigin(other.timeOrigin),
