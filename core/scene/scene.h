@@ -12,6 +12,7 @@
 #include "scene/contact_spec.h"
 #include "scene/tearing_spec.h"
 #include "tearing/strength_map.h"
+#include "tearing/tear_region.h"
 #include "util/types.h"
 
 namespace weft {
@@ -84,6 +85,8 @@ struct ClothSpec {
   double weftAngleDeg = 0.0;     // weft direction U in material space, degrees from material x
   // A painted multiplier on the tear table's strength (tearing/strength_map.h), or none.
   std::optional<TearStrengthMap> tearStrengthMap;
+  // A second tear table over part of the cloth (tearing/tear_region.h), or none.
+  std::optional<TearRegion> tearRegion;
   std::vector<PinGroup> pins;
   ClothAppearance appearance;
 

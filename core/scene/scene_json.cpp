@@ -100,20 +100,33 @@ void parseMaterialField(const FieldReader& r, const SceneReadContext& ctx, Cloth
 
 // A cloth's own tear table replaces its material's: a preset name (presets/tear_tables/NAME.json)
 // or an inline table.
+// The tear table at r's `key`: a preset name (presets/tear_tables/NAME.json) or an inline table.
+TearTable parseTearTableValue(const FieldReader& r, const std::string& key, const SceneReadContext& ctx) {
+  const json& value = r.at(key);
+  const std::string at = r.pointer(key);
+  if (value.is_object()) return parseTearTable(value, ctx.file, at);
+  if (!value.is_string()) r.fail(at, "must be a tear table preset name or a tear table object, " + got(value));
+  requirePresetNameLength(r, at, value.get<std::string>());
+  fs::path found;
+  TearTable table = loadTearTablePreset(value.get<std::string>(), ctx.paths.tearTableDirs, ctx.file, at, &found);
+  ctx.read(found);
+  return table;
+}
+
 void parseTearTableField(const FieldReader& r, const SceneReadContext& ctx, ClothSpec& cloth) {
-  if (!r.has("tear_table")) return;
-  const json& value = r.at("tear_table");
-  const std::string at = r.pointer("tear_table");
-  if (value.is_object()) {
-    cloth.material.tearTable = parseTearTable(value, ctx.file, at);
-  } else if (value.is_string()) {
-    requirePresetNameLength(r, at, value.get<std::string>());
-    fs::path found;
-    cloth.material.tearTable = loadTearTablePreset(value.get<std::string>(), ctx.paths.tearTableDirs, ctx.file, at, &found);
-    ctx.read(found);
-  } else {
-    r.fail(at, "must be a tear table preset name or a tear table object, " + got(value));
+  if (r.has("tear_table")) cloth.material.tearTable = parseTearTableValue(r, "tear_table", ctx);
+}
+
+// An image's rectangle in material space, when r has an "extent": {"min": [x, y], "max": [x, y]}.
+void parseImageExtent(const FieldReader& r, const SceneReadContext& ctx, TearStrengthMap& map) {
+  if (!r.has("extent")) return;
+  const FieldReader box(r.at("extent"), r.pointer("extent"), ctx.file, {"min", "max"});
+  map.lo = vec2Value(box, box.required("min", "the image's [x, y] minimum in material space (m)"), box.pointer("min"));
+  map.hi = vec2Value(box, box.required("max", "the image's [x, y] maximum in material space (m)"), box.pointer("max"));
+  if (!(map.hi.x() > map.lo.x() && map.hi.y() > map.lo.y())) {
+    box.fail(box.pointer("max"), "must be above \"min\" in x and y (the image's rectangle in material space)");
   }
+  map.explicitExtent = true;
 }
 
 // A painted multiplier on the tear table's strength (tearing/strength_map.h):
@@ -136,18 +149,39 @@ void parseTearStrengthMapField(const FieldReader& parent, const SceneReadContext
   map.white = r.number("white", map.white, multiplier, "the multiplier on the tear strength where the image is white");
   map.reach = r.number("reach_m", map.reach, Range{0.0, 1.0, true, "m"},
                        "how far along a line the map is read either side of its vertex (m)");
-  if (r.has("extent")) {
-    const FieldReader box(r.at("extent"), r.pointer("extent"), ctx.file, {"min", "max"});
-    map.lo = vec2Value(box, box.required("min", "the image's [x, y] minimum in material space (m)"), box.pointer("min"));
-    map.hi = vec2Value(box, box.required("max", "the image's [x, y] maximum in material space (m)"), box.pointer("max"));
-    if (!(map.hi.x() > map.lo.x() && map.hi.y() > map.lo.y())) {
-      box.fail(box.pointer("max"), "must be above \"min\" in x and y (the image's rectangle in material space)");
-    }
-    map.explicitExtent = true;
-  }
+  parseImageExtent(r, ctx, map);
   const fs::path file = resolveAsset(map.image, r, "image", ctx);
   readStrengthImage(file.string(), ctx.file, r.pointer("image"), map);
   cloth.tearStrengthMap = std::move(map);
+}
+
+// A second tear table over part of the cloth (tearing/tear_region.h):
+// {"image": "FILE.png", "tear_table": NAME or {...}, "reach_m": 0.04,
+//  "extent": {"min": [x, y], "max": [x, y]}}; white is the region, black the cloth's own table.
+void parseTearRegionField(const FieldReader& parent, const SceneReadContext& ctx, ClothSpec& cloth) {
+  if (!parent.has("tear_region")) return;
+  const json& value = parent.at("tear_region");
+  const std::string at = parent.pointer("tear_region");
+  if (!value.is_object()) {
+    parent.fail(at, "must be an object, e.g. {\"image\": \"seam.png\", \"tear_table\": \"NAME\"}, " + got(value));
+  }
+  const FieldReader r(value, at, ctx.file, {"image", "tear_table", "reach_m", "extent"});
+  const std::string image =
+      r.stringValue(r.required("image", "the region's grayscale image (PNG; white: the region), found as OBJ meshes are"),
+                    r.pointer("image"));
+  r.required("tear_table", "the region's tear table: a preset name or a table object");
+  const TearTable table = parseTearTableValue(r, "tear_table", ctx);
+  if (!cloth.material.tearTable) {
+    parent.fail(at, "needs the cloth's own tear table (\"tear_table\" on the cloth or its material): the region "
+                    "blends its table with it");
+  }
+  const double reach = r.number("reach_m", 0.04, Range{0.0, 1.0, true, "m"},
+                                "how far along a line the region's image is read either side of its vertex (m)");
+  const fs::path file = resolveAsset(image, r, "image", ctx);
+  TearRegion region = makeTearRegion(file.string(), ctx.file, r.pointer("image"), table, reach);
+  region.outside.image = image;
+  parseImageExtent(r, ctx, region.outside);
+  cloth.tearRegion = std::move(region);
 }
 
 const std::vector<std::string>& cornerNames() {
@@ -307,7 +341,7 @@ ClothAppearance parseAppearance(const json& j, const std::string& pointer, const
 
 ClothSpec parseCloth(const json& j, const std::string& pointer, std::size_t index, const SceneReadContext& ctx) {
   const FieldReader r(j, pointer, ctx.file,
-                      {"name", "mesh", "placement", "material", "tear_table", "tear_strength_map", "weft_angle_deg", "pins",
+                      {"name", "mesh", "placement", "material", "tear_table", "tear_strength_map", "tear_region", "weft_angle_deg", "pins",
                        "appearance"});
   ClothSpec cloth;
   cloth.name = r.string("name", index == 0 ? std::string("cloth") : "cloth" + std::to_string(index));
@@ -317,6 +351,7 @@ ClothSpec parseCloth(const json& j, const std::string& pointer, std::size_t inde
   parseMaterialField(r, ctx, cloth);
   parseTearTableField(r, ctx, cloth);
   parseTearStrengthMapField(r, ctx, cloth);
+  parseTearRegionField(r, ctx, cloth);
   cloth.weftAngleDeg = r.number("weft_angle_deg", cloth.weftAngleDeg, Bound::Finite);
   if (r.has("pins")) {
     const json& groups = r.array("pins");

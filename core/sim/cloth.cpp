@@ -7,7 +7,6 @@
 #include <Eigen/Geometry>
 
 #include "mesh/grid.h"
-#include "mesh/material_bounds.h"
 #include "mesh/obj_import.h"
 #include "util/input_error.h"
 
@@ -180,12 +179,11 @@ Cloth buildCloth(const ClothSpec& spec, const std::string& sceneFile, int clothI
   }
   assignLumpedMasses(cloth.mesh, cloth.material.areaDensity);
   rebuildElements(cloth);
-  if (spec.tearStrengthMap) {
-    // By default the map spans the cloth's material-space bounding box (strength_map.h).
-    const MaterialBounds bounds = materialBounds(cloth.mesh);
-    cloth.tearStrengthMap = spec.tearStrengthMap;
-    prepareStrengthMap(*cloth.tearStrengthMap, bounds.lo, bounds.hi);
-  }
+  // By default a map or a region's image spans the cloth's material-space bounding box (strength_map.h).
+  cloth.tearStrengthMap = spec.tearStrengthMap;
+  if (cloth.tearStrengthMap) prepareStrengthMapFor(*cloth.tearStrengthMap, cloth.mesh);
+  cloth.tearRegion = spec.tearRegion;
+  if (cloth.tearRegion) prepareStrengthMapFor(cloth.tearRegion->outside, cloth.mesh);
 
   for (size_t g = 0; g < spec.pins.size(); ++g) {
     PinTrack track;

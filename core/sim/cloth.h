@@ -12,6 +12,7 @@
 #include "scene/scene.h"
 #include "sim/stage_profile.h"
 #include "tearing/strength_map.h"
+#include "tearing/tear_region.h"
 
 namespace weft {
 
@@ -29,6 +30,8 @@ struct Cloth {
   double weftAngleRad = 0.0;
   // A painted multiplier on the tear table's strength over material space (strength_map.h).
   std::optional<TearStrengthMap> tearStrengthMap;
+  // A second tear table over part of the cloth (tear_region.h).
+  std::optional<TearRegion> tearRegion;
   std::vector<MembraneElement> membranes;  // one per triangle, same ids
   std::vector<BendingHinge> hinges;        // one per interior edge with stiffness
   std::vector<PinTrack> pins;

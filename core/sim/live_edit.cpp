@@ -57,6 +57,7 @@ Scene withoutLiveEdits(const Scene& running, Scene edited, const World* world = 
     cloth.weftAngleDeg = was.weftAngleDeg;
     cloth.appearance = was.appearance;
     cloth.tearStrengthMap = was.tearStrengthMap;
+    cloth.tearRegion = was.tearRegion;
   }
   return edited;
 }
@@ -80,6 +81,7 @@ void applyLiveEdits(World& world, const Scene& edited) {
     if (cloth.weftAngleDeg != was.weftAngleDeg) world.setClothWeftAngle(c, cloth.weftAngleDeg);
     if (!(cloth.appearance == was.appearance)) world.setClothAppearance(c, cloth.appearance);
     if (!(cloth.tearStrengthMap == was.tearStrengthMap)) world.setClothTearStrengthMap(c, cloth.tearStrengthMap);
+    if (!(cloth.tearRegion == was.tearRegion)) world.setClothTearRegion(c, cloth.tearRegion);
     if (cloth.name != was.name || cloth.materialName != was.materialName)
       world.setClothLabels(c, cloth.name, cloth.materialName);
   }

@@ -86,6 +86,8 @@ class World {
   // the cloth's material bounds unless its extent is explicit; read by the tearing stage from the
   // next step on (the editor's tear strength brush).
   void setClothTearStrengthMap(int cloth, const std::optional<TearStrengthMap>& map);
+  // A second tear table over part of the cloth (tearing/tear_region.h), or none; live.
+  void setClothTearRegion(int cloth, const std::optional<TearRegion>& region);
   void setForces(const ForcesSpec& forces);  // read afresh every step
   // dt, substeps and threads are read every step (time() continues from where it is); any other
   // change (integrator kind, linear solver, preconditioner, tolerances, iteration bounds) builds

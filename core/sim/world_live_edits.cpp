@@ -2,7 +2,6 @@
 // refreshes what was derived from the edited value, and records the value in the World's scene.
 #include <stdexcept>
 
-#include "mesh/material_bounds.h"
 #include "sim/world_impl.h"
 
 namespace weft {
@@ -64,12 +63,17 @@ void World::setClothTearStrengthMap(int index, const std::optional<TearStrengthM
   Impl& w = *impl_;
   Cloth& cloth = clothAt(w.cloths, index);
   cloth.tearStrengthMap = map;
-  if (cloth.tearStrengthMap) {
-    // Over the material bounding box, as buildCloth places it.
-    const MaterialBounds bounds = materialBounds(cloth.mesh);
-    prepareStrengthMap(*cloth.tearStrengthMap, bounds.lo, bounds.hi);
-  }
+  // Over the material bounding box, as buildCloth places it.
+  if (cloth.tearStrengthMap) prepareStrengthMapFor(*cloth.tearStrengthMap, cloth.mesh);
   w.scene.cloths[index].tearStrengthMap = map;
+}
+
+void World::setClothTearRegion(int index, const std::optional<TearRegion>& region) {
+  Impl& w = *impl_;
+  Cloth& cloth = clothAt(w.cloths, index);
+  cloth.tearRegion = region;
+  if (cloth.tearRegion) prepareStrengthMapFor(cloth.tearRegion->outside, cloth.mesh);
+  w.scene.cloths[index].tearRegion = region;
 }
 
 void World::setForces(const ForcesSpec& forces) { impl_->scene.forces = forces; }

@@ -6,6 +6,8 @@
 
 #include <stb_image.h>
 
+#include "mesh/material_bounds.h"
+#include "tearing/tear_region.h"
 #include "util/input_error.h"
 
 namespace weft {
@@ -91,6 +93,11 @@ void prepareStrengthMap(TearStrengthMap& map, const Vec2& lo, const Vec2& hi) {
   minFilter(map.lowest, map.width, map.height, std::min(ky, map.height), false);
 }
 
+void prepareStrengthMapFor(TearStrengthMap& map, const ClothMesh& mesh) {
+  const MaterialBounds bounds = materialBounds(mesh);
+  prepareStrengthMap(map, bounds.lo, bounds.hi);
+}
+
 double strengthMultiplierAt(const TearStrengthMap& map, const Vec2& point) {
   double u = 0.0, v = 0.0;
   pixelCoordinates(map, point, u, v);
@@ -124,9 +131,29 @@ double lowestStrengthMultiplierNear(const TearStrengthMap& map, const Vec2& poin
 }
 
 StrengthScale::StrengthScale(double factorIn, const TearStrengthMap* mapIn, const Vec2& pointIn, bool rayIn)
-    : factor(factorIn), map(mapIn), point(pointIn), ray(rayIn), lowestFactor(factorIn) {
+    : StrengthScale(factorIn, mapIn, nullptr, nullptr, 0.0, pointIn, rayIn) {}
+
+StrengthScale::StrengthScale(double factorIn, const TearStrengthMap* mapIn, const TearRegion* regionIn,
+                             const TearTable* ownIn, double weftAngleRadIn, const Vec2& pointIn, bool rayIn)
+    : factor(factorIn),
+      map(mapIn),
+      region(ownIn != nullptr ? regionIn : nullptr),
+      own(ownIn),
+      weftAngleRad(weftAngleRadIn),
+      point(pointIn),
+      ray(rayIn),
+      lowestFactor(factorIn) {
   // The margin covers the rounding of the bilinear means (float pixels summed in double).
-  if (map != nullptr) lowestFactor = factor * lowestStrengthMultiplierNear(*map, point) * (1.0 - 1e-9);
+  if (map != nullptr) lowestFactor *= lowestStrengthMultiplierNear(*map, point);
+  if (region != nullptr) lowestFactor *= lowestRegionFactorNear(*region, *own, point);
+  if (map != nullptr || region != nullptr) lowestFactor *= 1.0 - 1e-9;
+}
+
+double StrengthScale::painted(double angle) const {
+  double scale = factor;
+  if (map != nullptr) scale *= strengthMultiplierAlong(*map, point, angle, ray);
+  if (region != nullptr) scale *= regionFactorAlong(*region, *own, weftAngleRad, point, angle, ray);
+  return scale;
 }
 
 }  // namespace weft

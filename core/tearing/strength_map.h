@@ -23,6 +23,10 @@
 
 namespace weft {
 
+struct ClothMesh;
+struct TearRegion;
+struct TearTable;
+
 struct TearStrengthMap {
   std::string image;       // the file as named in the scene (for messages)
   int width = 0, height = 0;
@@ -49,6 +53,9 @@ void readStrengthImage(const std::string& path, const std::string& file, const s
 // the multipliers and their lower bounds.
 void prepareStrengthMap(TearStrengthMap& map, const Vec2& lo, const Vec2& hi);
 
+// prepareStrengthMap over the mesh's material bounding box (where a cloth's map lies by default).
+void prepareStrengthMapFor(TearStrengthMap& map, const ClothMesh& mesh);
+
 // The multiplier at a material point (bilinear).
 double strengthMultiplierAt(const TearStrengthMap& map, const Vec2& point);
 // The mean multiplier along the line through `point` at `angle` (rad, material space), over
@@ -58,23 +65,31 @@ double strengthMultiplierAlong(const TearStrengthMap& map, const Vec2& point, do
 double lowestStrengthMultiplierNear(const TearStrengthMap& map, const Vec2& point);
 
 // The strength scale of one vertex's lines: a factor (a crack tip's propagation factor, or 1) times,
-// when the cloth has a map, the map's mean along each line. Implicit from a plain factor, so the
-// search's callers without a map pass 1.0 or the propagation factor as before.
+// when the cloth has a map, the map's mean along each line, and when it has a tear region
+// (tear_region.h), the region's blend of its table with the cloth's own. Implicit from a plain
+// factor, so the search's callers without either pass 1.0 or the propagation factor as before.
 struct StrengthScale {
   StrengthScale(double factorIn) : factor(factorIn), lowestFactor(factorIn) {}  // NOLINT: implicit
   StrengthScale(double factorIn, const TearStrengthMap* mapIn, const Vec2& pointIn, bool rayIn);
+  // With a region too (`own`: the cloth's table, whose strengths the scale multiplies).
+  StrengthScale(double factorIn, const TearStrengthMap* mapIn, const TearRegion* regionIn, const TearTable* ownIn,
+                double weftAngleRadIn, const Vec2& pointIn, bool rayIn);
   // The scale of the line (or ray) at `angle` (rad, material space).
-  double of(double angle) const {
-    return map == nullptr ? factor : factor * strengthMultiplierAlong(*map, point, angle, ray);
-  }
+  double of(double angle) const { return map == nullptr && region == nullptr ? factor : painted(angle); }
   // At most of(angle) for every angle.
   double lowest() const { return lowestFactor; }
 
   double factor = 1.0;
   const TearStrengthMap* map = nullptr;
+  const TearRegion* region = nullptr;
+  const TearTable* own = nullptr;
+  double weftAngleRad = 0.0;
   Vec2 point = Vec2::Zero();  // the vertex (material space)
   bool ray = false;
   double lowestFactor = 1.0;
+
+ private:
+  double painted(double angle) const;
 };
 
 }  // namespace weft

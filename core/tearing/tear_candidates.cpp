@@ -277,7 +277,7 @@ double angleFromWarpDeg(double angle, double weftAngleRad) {
 void findTearCandidates(const ClothMesh& mesh, const std::vector<TriangleCorners>& corners,
                         const std::vector<Mat2>& triangleStress, const TearTable& table,
                         double weftAngleRad, const TearSearchSettings& settings, std::vector<TearCandidate>& out,
-                        TearSearchCounts& counts, const TearStrengthMap* strengthMap) {
+                        TearSearchCounts& counts, const TearStrengthMap* strengthMap, const TearRegion* region) {
   out.clear();
   // The triangles around each vertex in compressed rows (one allocation, not one per vertex).
   const int n = mesh.vertexCount();
@@ -300,7 +300,9 @@ void findTearCandidates(const ClothMesh& mesh, const std::vector<TriangleCorners
     return first.rest[first.v[0] == v ? 0 : first.v[1] == v ? 1 : 2];
   };
   auto scaleOf = [&](int v, const StressFan& fan) {
-    return strengthMap != nullptr ? StrengthScale(1.0, strengthMap, restPositionOf(v), !fan.closed) : StrengthScale(1.0);
+    return strengthMap != nullptr || region != nullptr
+               ? StrengthScale(1.0, strengthMap, region, &table, weftAngleRad, restPositionOf(v), !fan.closed)
+               : StrengthScale(1.0);
   };
   auto bestLineOf = [&](int v, const StressFan& fan) {
     return bestLineAt(fan, table, weftAngleRad, settings, scaleOf(v, fan), counts);

@@ -92,10 +92,12 @@ std::vector<TearCandidate> linesAboveOneAt(const StressFan& fan, const TearTable
 // just the one selectTears would choose first).
 // `corners` is triangleCorners(mesh), kept up to date (separation_strength.h). With a strength
 // map (prepared for this mesh's material bounds), each line's strength is scaled by the map's mean
-// along it, as the tear stage's search does.
+// along it, and with a tear region (prepared likewise) blended with the region's table, as the tear
+// stage's search does.
 void findTearCandidates(const ClothMesh& mesh, const std::vector<TriangleCorners>& corners,
                         const std::vector<Mat2>& triangleStress, const TearTable& table,
                         double weftAngleRad, const TearSearchSettings& settings, std::vector<TearCandidate>& out,
-                        TearSearchCounts& counts, const TearStrengthMap* strengthMap = nullptr);
+                        TearSearchCounts& counts, const TearStrengthMap* strengthMap = nullptr,
+                        const TearRegion* region = nullptr);
 
 }  // namespace weft

@@ -349,16 +349,14 @@ TearCandidate TearSearch::tipLineAt(const ClothMesh& mesh, const std::vector<Tri
 }
 
 StrengthScale TearSearch::scaleAt(const ClothMesh& mesh, int vertex, double factor, bool ray) const {
-  if (map_ == nullptr) return StrengthScale(factor);
+  if (map_ == nullptr && region_ == nullptr) return StrengthScale(factor);
   const Triangle& t = mesh.tris[triangleAt_[vertex]];
-  return StrengthScale(factor, map_, t.rest[cornerOf(t, vertex)], ray);
+  return StrengthScale(factor, map_, region_, table_, weftAngleRad_, t.rest[cornerOf(t, vertex)], ray);
 }
 
 double TearSearch::lowestMultiplierAt(const ClothMesh& mesh, int vertex) const {
-  if (map_ == nullptr) return 1.0;
-  const Triangle& t = mesh.tris[triangleAt_[vertex]];
-  // The same margin as StrengthScale::lowest.
-  return lowestStrengthMultiplierNear(*map_, t.rest[cornerOf(t, vertex)]) * (1.0 - 1e-9);
+  if (map_ == nullptr && region_ == nullptr) return 1.0;
+  return scaleAt(mesh, vertex, 1.0, false).lowest();  // the lowest does not depend on `ray`
 }
 
 bool TearSearch::nearCrack(const ClothMesh& mesh, const Vec2& restPosition, double radius) const {

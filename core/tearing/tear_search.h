@@ -21,6 +21,7 @@
 #include "mesh/cloth_mesh.h"
 #include "tearing/separation_strength.h"
 #include "tearing/strength_map.h"
+#include "tearing/tear_region.h"
 #include "tearing/tear_candidates.h"
 #include "tearing/tear_table.h"
 
@@ -35,6 +36,8 @@ class TearSearch {
   // The cloth's painted strength (strength_map.h), or none; read by every later call, bounds
   // included. Set before start.
   void setStrengthMap(const TearStrengthMap* map) { map_ = map; }
+  // The cloth's tear region (tear_region.h), or none; read as the map is.
+  void setTearRegion(const TearRegion* region) { region_ = region; }
   // Every vertex looked at afresh (the start of a step).
   void start(const ClothMesh& mesh, const std::vector<TriangleCorners>& corners, const std::vector<Mat2>& stress,
              const TearTable& table, double weftAngleRad, const TearSearchSettings& settings, TearSearchCounts& counts);
@@ -100,6 +103,7 @@ class TearSearch {
 
   const TearTable* table_ = nullptr;
   const TearStrengthMap* map_ = nullptr;
+  const TearRegion* region_ = nullptr;
   double weftAngleRad_ = 0.0;
   TearSearchSettings settings_;
   std::vector<int> triangleAt_;          // per vertex: a triangle that holds it (kNone: none)

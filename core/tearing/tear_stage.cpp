@@ -165,7 +165,8 @@ TopologyChange TearStage::tearCloth(Cloth& cloth, int clothIndex, const Membrane
       // largest principal stress bounds zeta within pi: separation_strength.h's bound).
       const double threshold =
           kRunOnRatio * std::min(1.0, table.propagationFactor) * weakestStrength(table) / std::numbers::pi *
-          (cloth.tearStrengthMap ? std::min(1.0, cloth.tearStrengthMap->smallest) : 1.0);
+          (cloth.tearStrengthMap ? std::min(1.0, cloth.tearStrengthMap->smallest) : 1.0) *
+          (cloth.tearRegion ? lowestRegionFactor(*cloth.tearRegion, table) : 1.0);
       nonlocal_[clothIndex].average(cloth.mesh, localStress_, spec_.stressLength, threshold, stress_);
     } else {
       stress_ = localStress_;
@@ -174,6 +175,7 @@ TopologyChange TearStage::tearCloth(Cloth& cloth, int clothIndex, const Membrane
   {
     StageTimer timer(profile, "tear_search");
     search_.setStrengthMap(cloth.tearStrengthMap ? &*cloth.tearStrengthMap : nullptr);
+    search_.setTearRegion(cloth.tearRegion ? &*cloth.tearRegion : nullptr);
     search_.start(cloth.mesh, corners, stress_, table, cloth.weftAngleRad, searchSettings_, stats_.search);
     if (spec_.incubation > 0.0 && !incubated(Incubating{time - dt, 0.0}, time, dt)) {
       // Only vertices that have waited long enough are offered as crack starts; the others are

@@ -19,6 +19,8 @@
 #include "sim/world.h"
 #include "support/tear_measures.h"
 #include "support/tear_scenes.h"
+#include "support/input_error_checks.h"
+#include "support/painted_search.h"
 #include "support/temp_dir.h"
 #include "tearing/strength_map.h"
 #include "tearing/tear_candidates.h"
@@ -219,25 +221,11 @@ TEST(StrengthMap, TheReferenceSearchReadsTheMapAsTheStageDoes) {
   prepareStrengthMap(map, Vec2(0, 0), Vec2(1, 1));
   const TearTable table = test::tearTable({1.0}, 200.0);  // the unpainted sheet at omega 0.5
   const std::vector<Mat2> stress(mesh.tris.size(), 100.0 * Mat2::Identity());
-  std::vector<std::vector<TearCandidate>> found;
-  for (const bool skip : {true, false}) {
-    TearSearchSettings settings;
-    settings.lines = CandidateLines::Dense;
-    settings.skipByBound = skip;
-    std::vector<TearCandidate> out;
-    TearSearchCounts counts;
-    findTearCandidates(mesh, triangleCorners(mesh), stress, table, 0.0, settings, out, counts, &map);
-    found.push_back(out);
-    std::vector<TearCandidate> unpainted;
-    findTearCandidates(mesh, triangleCorners(mesh), stress, table, 0.0, settings, unpainted, counts);
-    EXPECT_TRUE(unpainted.empty());
-  }
-  ASSERT_FALSE(found[0].empty());
-  ASSERT_EQ(found[0].size(), found[1].size());
-  for (std::size_t k = 0; k < found[0].size(); ++k) {
-    const TearCandidate& c = found[0][k];
-    EXPECT_EQ(c.vertex, found[1][k].vertex);
-    EXPECT_EQ(c.angle, found[1][k].angle);
+  const test::PaintedSearch search = test::paintedSearch(mesh, stress, table, &map, nullptr);
+  EXPECT_TRUE(search.unpaintedFindsNone);
+  test::expectTheBoundSkipsNothing(search);
+  ASSERT_FALSE(search.withBound.empty());
+  for (const TearCandidate& c : search.withBound) {
     EXPECT_LT(std::abs(c.restPosition.y() - 0.5), 0.05) << "vertex " << c.vertex;
     // Along the band: under this isotropic stress every line that stays inside the band over the
     // map's reach is as weak (x0.2), so the line is one of those, at omega 100 / (200 x 0.2).
@@ -302,16 +290,8 @@ TEST(StrengthMapJson, BadInputNamesTheFileAndTheField) {
       {json::parse(R"("ok.png")"), "/cloths/0/tear_strength_map", "object"},
   };
   for (const Case& c : cases) {
-    const auto file = dir.write("bad-scene.json", sheetWithMap(c.map).dump());
-    try {
-      (void)loadScene(file);
-      ADD_FAILURE() << "loaded without an InputError: " << c.map.dump();
-    } catch (const InputError& e) {
-      const std::string what = e.what();
-      EXPECT_NE(what.find("bad-scene.json"), std::string::npos) << what;
-      EXPECT_EQ(e.field().rfind(c.field, 0), 0u) << "field " << e.field() << ", expected " << c.field << "; " << what;
-      EXPECT_NE(what.find(c.mentions), std::string::npos) << "expected '" << c.mentions << "' in: " << what;
-    }
+    test::expectLoadRefused(dir.write("bad-scene.json", sheetWithMap(c.map).dump()), "bad-scene.json", c.field, c.mentions,
+                            c.map.dump());
   }
 }
 
