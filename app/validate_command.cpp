@@ -99,6 +99,18 @@ int validateScene(const ValidateOptions& options) {
                 << (table.name.empty() ? std::string("inline") : table.name) << ", " << table.strength.size()
                 << " direction(s), weakest " << weakestStrength(table) << " N/m"
                 << (scene.stages.tearing ? "" : " (tearing switched off)") << "\n";
+      if (cloth.tearStrengthMap) {
+        std::cout << "    strength map " << cloth.tearStrengthMap->image << " (" << cloth.tearStrengthMap->width << " x "
+                  << cloth.tearStrengthMap->height << " px, multipliers " << cloth.tearStrengthMap->black << " to "
+                  << cloth.tearStrengthMap->white << ")\n";
+      }
+      if (cloth.tearRegion) {
+        const TearRegion& region = *cloth.tearRegion;
+        std::cout << "    tear region " << region.outside.image << " (" << region.outside.width << " x "
+                  << region.outside.height << " px): table "
+                  << (region.table.name.empty() ? std::string("inline") : region.table.name) << ", weakest "
+                  << weakestStrength(region.table) << " N/m (where the image is white)\n";
+      }
     }
     return kExitOk;
   } catch (const InputError& e) {

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <algorithm>
 #include <fstream>
+#include <iterator>
 #include <map>
 #include <random>
 #include <sstream>
@@ -87,6 +88,15 @@ TEST_F(WeftCli, ValidateAcceptsEveryPresetScene) {
     const Result r = weft("validate " + quoted(entry.path()));
     EXPECT_EQ(r.exitCode, 0) << r.output;
     EXPECT_EQ(r.output.rfind("ok: " + entry.path().stem().string() + ": 1 cloths, ", 0), 0u) << r.output;
+    // A painted strength and a tear region are named with their images.
+    std::ifstream in(entry.path());
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    if (text.find("\"tear_strength_map\"") != std::string::npos) {
+      EXPECT_NE(r.output.find("    strength map "), std::string::npos) << r.output;
+    }
+    if (text.find("\"tear_region\"") != std::string::npos) {
+      EXPECT_NE(r.output.find("    tear region "), std::string::npos) << r.output;
+    }
     ++count;
   }
   EXPECT_GE(count, 3);
