@@ -3,6 +3,7 @@
 // strength over the full circle with the weft and warp axes of the cloth drawn on it.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -12,6 +13,7 @@
 #include "preset_names.h"
 #include "scene/scene_json.h"
 #include "tearing/tear_candidates.h"
+#include "tearing/tear_region.h"
 #include "tearing/tear_table.h"
 
 namespace weft::editor {
@@ -28,7 +30,8 @@ std::vector<std::string> tearTablePresets(const Scene& scene) {
 // the frame the woven texture is drawn in. The line at screen angle θ is a line at θ in material
 // space; its α comes from the core's own angleFromWarpDeg, the one convention the tearing stage
 // and its tear log use, so the plot's dips lie along the lines the simulation tears.
-void drawPolarPlot(const TearTable& table, double weftAngleDeg, float size) {
+// With a tear region, its table is drawn too, in orange, on the same scale.
+void drawPolarPlot(const TearTable& table, const TearTable* region, double weftAngleDeg, float size) {
   ImDrawList* draw = ImGui::GetWindowDrawList();
   const ImVec2 origin = ImGui::GetCursorScreenPos();
   ImGui::InvisibleButton("polar", ImVec2(size, size));
@@ -37,6 +40,9 @@ void drawPolarPlot(const TearTable& table, double weftAngleDeg, float size) {
   const float radius = 0.40f * size;
   double largest = 0.0;
   for (double s : table.strength) largest = std::max(largest, s * table.unitNPerM);
+  if (region != nullptr) {
+    for (double s : region->strength) largest = std::max(largest, s * region->unitNPerM);
+  }
   if (largest <= 0.0) return;
 
   draw->AddCircle(c, radius, IM_COL32(200, 200, 200, 255), 64);
@@ -61,14 +67,34 @@ void drawPolarPlot(const TearTable& table, double weftAngleDeg, float size) {
   axis(weft + 0.5 * kPi, IM_COL32(30, 150, 60, 255), "warp");
 
   // The curve: at screen angle θ, the line direction is θ in material space.
-  std::vector<ImVec2> points;
-  for (int i = 0; i <= 360; ++i) {
-    const double theta = i * kPi / 180.0;
-    const double alphaDeg = angleFromWarpDeg(theta, weft);
-    const double r = radius * requiredStrength(table, alphaDeg) / largest;
-    points.emplace_back(c.x + static_cast<float>(r * std::cos(theta)), c.y - static_cast<float>(r * std::sin(theta)));
+  auto curve = [&](const TearTable& of, ImU32 colour) {
+    std::vector<ImVec2> points;
+    for (int i = 0; i <= 360; ++i) {
+      const double theta = i * kPi / 180.0;
+      const double alphaDeg = angleFromWarpDeg(theta, weft);
+      const double r = radius * requiredStrength(of, alphaDeg) / largest;
+      points.emplace_back(c.x + static_cast<float>(r * std::cos(theta)), c.y - static_cast<float>(r * std::sin(theta)));
+    }
+    draw->AddPolyline(points.data(), static_cast<int>(points.size()), colour, 0, 2.0f);
+  };
+  if (region != nullptr) curve(*region, IM_COL32(235, 140, 20, 255));
+  curve(table, IM_COL32(200, 40, 40, 255));
+}
+
+// The cloth's second table (core/tearing/tear_region.h), described, not edited here: its image
+// and table are the scene file's. The plot above draws it in orange.
+void describeTearRegion(const TearRegion& region) {
+  std::string strengths;
+  for (int k = 0; k < static_cast<int>(region.table.strength.size()); ++k) {
+    char entry[64];
+    std::snprintf(entry, sizeof entry, "%s%.3g at %.4g", k == 0 ? "" : ", ", region.table.strength[k],
+                  tableDirectionDeg(region.table, k));
+    strengths += entry;
   }
-  draw->AddPolyline(points.data(), static_cast<int>(points.size()), IM_COL32(200, 40, 40, 255), 0, 2.0f);
+  ImGui::TextColored(ImVec4(0.85f, 0.5f, 0.05f, 1.0f), "Tear region (orange above):");
+  ImGui::TextWrapped("where %s is white, table %s: %s deg (x %.3g N/m); edit them in the scene file",
+                     region.outside.image.c_str(), region.table.name.empty() ? "inline" : region.table.name.c_str(),
+                     strengths.c_str(), region.table.unitNPerM);
 }
 
 }  // namespace
@@ -136,8 +162,9 @@ void drawTearTablePanel(EditorSession& session, PanelState& state) {
     recordWidget(state, "tear/" + std::to_string(k));
     showRefusal(session, editLabel);
   }
-  drawPolarPlot(table, cloth.weftAngleDeg, 220.0f);
+  drawPolarPlot(table, cloth.tearRegion ? &cloth.tearRegion->table : nullptr, cloth.weftAngleDeg, 220.0f);
   recordWidget(state, "tear/plot");
+  if (cloth.tearRegion) describeTearRegion(*cloth.tearRegion);
   ImGui::End();
 }
 
