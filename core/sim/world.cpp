@@ -53,7 +53,7 @@ void World::step() {
     w.contact->resolve(w.cloths, w.startPositions, w.obstacles, h, w.profile);
     w.endObstacles();
     w.evaluateMembraneAhead(inputs.threads);
-    w.tear(inputs.time + h, h);
+    w.tear(inputs.time + h, h, inputs.threads);
   }
   ++w.steps;
   w.time = w.timeOrigin + static_cast<double>(w.steps - w.stepsAtOrigin) * w.scene.solver.dt;

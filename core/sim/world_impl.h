@@ -92,9 +92,9 @@ struct World::Impl {
   }
   // Tears what must tear, and has whatever depends on a torn cloth's topology patched with what
   // changed (the matrix pattern, the collision topology and broad phase).
-  void tear(double time, double dt) {
+  void tear(double time, double dt, int threads) {
     if (!tearing->runs()) return;
-    const std::vector<TopologyChange> changes = tearing->run(cloths, membraneAhead, time, dt, profile);
+    const std::vector<TopologyChange> changes = tearing->run(cloths, membraneAhead, time, dt, threads, profile);
     for (size_t c = 0; c < cloths.size(); ++c) {
       if (changes[c].empty()) continue;
       integrators[c]->topologyChanged(cloths[c], changes[c]);

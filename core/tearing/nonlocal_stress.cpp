@@ -229,7 +229,7 @@ void NonlocalStress::rebuild(const ClothMesh& mesh, double radius) {
 }
 
 void NonlocalStress::average(const ClothMesh& mesh, const std::vector<Mat2>& local, double radius, double threshold,
-                             std::vector<Mat2>& out) {
+                             std::vector<Mat2>& out, int threads) {
   if (!built_ || radius != radius_ || mesh.tris.size() != cachedTriangles_) rebuild(mesh, radius);
   out = local;
   pack(local);
@@ -245,6 +245,7 @@ void NonlocalStress::average(const ClothMesh& mesh, const std::vector<Mat2>& loc
   // stays below the threshold, as the local stress does. A lip is not in its own list: a hot one
   // is averaged, or it would keep the stretch its average leaves out.
   needed_.assign(count, 0);
+#pragma omp parallel for num_threads(std::max(1, threads)) schedule(static)
   for (int t = 0; t < count; ++t) {
     bool need = hot_[t];
     for (const Neighbour& n : neighbours_[t]) {
@@ -260,6 +261,7 @@ void NonlocalStress::average(const ClothMesh& mesh, const std::vector<Mat2>& loc
     if (!needed_[t]) continue;
     for (int v : mesh.tris[t].v) vertexNeeded_[v] = 1;
   }
+#pragma omp parallel for num_threads(std::max(1, threads)) schedule(static)
   for (int t = 0; t < count; ++t) {
     const Triangle& tri = mesh.tris[t];
     if (needed_[t] || vertexNeeded_[tri.v[0]] || vertexNeeded_[tri.v[1]] || vertexNeeded_[tri.v[2]]) {

@@ -59,8 +59,10 @@ class NonlocalStress {
   // The neighbourhoods are those of the last call or patch, unless the radius or the triangle
   // count changed since: between two calls a mesh must change only through tears that `patch`
   // was told of (as the tear stage's other caches assume), so one object serves one mesh.
+  // `threads`: the averages are computed on that many threads (each triangle's alone, so the
+  // result does not depend on it).
   void average(const ClothMesh& mesh, const std::vector<Mat2>& local, double radius, double threshold,
-               std::vector<Mat2>& out);
+               std::vector<Mat2>& out, int threads = 1);
   // After a tear changed the listed triangles (their local stress is already updated; triangles
   // the tear added need not be listed; every other triangle's local stress is as the last call
   // read it): the neighbourhoods and averages that depend on them,

@@ -129,20 +129,21 @@ void TearStage::holdIncubating(const Cloth& cloth, const std::vector<TriangleCor
 }
 
 std::vector<TopologyChange> TearStage::run(std::vector<Cloth>& cloths, const std::vector<MembraneAhead>& ahead,
-                                           double time, double dt, StageProfile& profile) {
+                                           double time, double dt, int threads, StageProfile& profile) {
   std::vector<TopologyChange> changed(cloths.size());
   if (!runs_) return changed;
   if (corners_.size() != cloths.size()) corners_.resize(cloths.size());
   if (nonlocal_.size() != cloths.size()) nonlocal_.resize(cloths.size());
   for (std::size_t c = 0; c < cloths.size(); ++c) {
     if (!cloths[c].material.tearTable) continue;
-    changed[c] = tearCloth(cloths[c], static_cast<int>(c), c < ahead.size() ? &ahead[c] : nullptr, time, dt, profile);
+    changed[c] = tearCloth(cloths[c], static_cast<int>(c), c < ahead.size() ? &ahead[c] : nullptr, time, dt, threads,
+                           profile);
   }
   return changed;
 }
 
 TopologyChange TearStage::tearCloth(Cloth& cloth, int clothIndex, const MembraneAhead* ahead, double time, double dt,
-                                   StageProfile& profile) {
+                                   int threads, StageProfile& profile) {
   TopologyChange changed;
   const TearTable& table = *cloth.material.tearTable;
   TearGuards guards;
@@ -167,7 +168,7 @@ TopologyChange TearStage::tearCloth(Cloth& cloth, int clothIndex, const Membrane
           kRunOnRatio * std::min(1.0, table.propagationFactor) * weakestStrength(table) / std::numbers::pi *
           (cloth.tearStrengthMap ? std::min(1.0, cloth.tearStrengthMap->smallest) : 1.0) *
           (cloth.tearRegion ? lowestRegionFactor(*cloth.tearRegion, table) : 1.0);
-      nonlocal_[clothIndex].average(cloth.mesh, localStress_, spec_.stressLength, threshold, stress_);
+      nonlocal_[clothIndex].average(cloth.mesh, localStress_, spec_.stressLength, threshold, stress_, threads);
     } else {
       stress_ = localStress_;
     }

@@ -53,10 +53,12 @@ class TearStage {
   // tears of this step changed together (empty when it did not tear).
   // `ahead`: per cloth, its membrane evaluated at the current positions (forces/membrane_ahead.h),
   // whose stresses are read instead of evaluated again (may be empty or hold stale entries).
+  // `threads`: the stage's per-triangle passes (the averaged stress) run on that many threads; the
+  // result does not depend on it.
   std::vector<TopologyChange> run(std::vector<Cloth>& cloths, const std::vector<MembraneAhead>& ahead, double time,
-                                  double dt, StageProfile& profile);
+                                  double dt, int threads, StageProfile& profile);
   std::vector<TopologyChange> run(std::vector<Cloth>& cloths, double time, double dt, StageProfile& profile) {
-    return run(cloths, {}, time, dt, profile);
+    return run(cloths, {}, time, dt, 1, profile);
   }
   const std::vector<TearRecord>& log() const { return log_; }
   const TearStats& stats() const { return stats_; }
@@ -65,7 +67,7 @@ class TearStage {
  private:
   // One cloth's step; returns what it changed.
   TopologyChange tearCloth(Cloth& cloth, int clothIndex, const MembraneAhead* ahead, double time, double dt,
-                           StageProfile& profile);
+                           int threads, StageProfile& profile);
   struct Incubating;
   // Whether the vertex has been overloaded for the incubation time at the end of this step.
   bool incubated(const Incubating& vertex, double time, double dt) const;
