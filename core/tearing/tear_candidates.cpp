@@ -264,16 +264,6 @@ std::vector<TearCandidate> linesAboveOneAt(const StressFan& fan, const TearTable
   return lines;
 }
 
-double angleFromWarpDeg(double angle, double weftAngleRad) {
-  // Eq. 3.1-3.2 take the signed angle from the line's direction C to V = U turned by +90 degrees:
-  // det(C, V) = cos(theta - w) and C . V = sin(theta - w), so alpha = w + 90 degrees - theta, which
-  // Eq. 3.3 brings into [0, 180). In closed form: no trigonometry per line (the search's inner loop).
-  double alpha = std::fmod((weftAngleRad - angle) * kRadToDeg + 90.0, 180.0);
-  if (alpha < 0.0) alpha += 180.0;
-  // A line at exactly 0 may round to just below 180, which is the same line: report 0.
-  return alpha < 180.0 - 1e-9 ? alpha : 0.0;
-}
-
 void findTearCandidates(const ClothMesh& mesh, const std::vector<TriangleCorners>& corners,
                         const std::vector<Mat2>& triangleStress, const TearTable& table,
                         double weftAngleRad, const TearSearchSettings& settings, std::vector<TearCandidate>& out,

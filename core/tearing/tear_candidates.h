@@ -58,10 +58,6 @@ struct TearCandidate {
   double ratio = 0.0;       // omega = zeta / R (Eq. 3.4)
 };
 
-// alpha of a line at `angle` (rad, material space) from the warp direction V of a cloth whose weft
-// U is at weftAngleRad from material x: Eq. 3.1-3.3 as printed (degrees, in [0, 180)).
-double angleFromWarpDeg(double angle, double weftAngleRad);
-
 // The best line of one vertex's fan (a full TearCandidate but for its vertex, position and ray
 // flag), with the table's strengths scaled by `strengthScale` (a crack tip's propagation factor,
 // times a painted strength map's mean along each line: strength_map.h).

@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
-#include "tearing/tear_candidates.h"
 
 namespace weft {
 namespace {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <numbers>
 
 #include <nlohmann/json.hpp>
 
@@ -127,6 +128,16 @@ TearTable loadTearTablePreset(const std::string& name, const std::vector<std::fi
                    "unknown tear table preset '" + name + "'; available presets: " +
                        (available.empty() ? std::string("none") : joinNames(available)) + " (searched: " +
                        joinNames(searched) + ")");
+}
+
+double angleFromWarpDeg(double angle, double weftAngleRad) {
+  // Eq. 3.1-3.2 take the signed angle from the line's direction C to V = U turned by +90 degrees:
+  // det(C, V) = cos(theta - w) and C . V = sin(theta - w), so alpha = w + 90 degrees - theta, which
+  // Eq. 3.3 brings into [0, 180). In closed form: no trigonometry per line (the search's inner loop).
+  double alpha = std::fmod((weftAngleRad - angle) * (180.0 / std::numbers::pi) + 90.0, 180.0);
+  if (alpha < 0.0) alpha += 180.0;
+  // A line at exactly 0 may round to just below 180, which is the same line: report 0.
+  return alpha < 180.0 - 1e-9 ? alpha : 0.0;
 }
 
 }  // namespace weft

@@ -47,6 +47,10 @@ double weakestStrength(const TearTable& table);
 // interpolation is linear in between.
 double weakestStrengthBetween(const TearTable& table, double fromDeg, double toDeg);
 
+// alpha of a line at `angle` (rad, material space) from the warp direction V of a cloth whose weft
+// U is at weftAngleRad from material x: Eq. 3.1-3.3 as printed (degrees, in [0, 180)).
+double angleFromWarpDeg(double angle, double weftAngleRad);
+
 // The direction of table entry k, degrees from V.
 double tableDirectionDeg(const TearTable& table, int k);
 
