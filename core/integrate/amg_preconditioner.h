@@ -60,10 +60,14 @@ class AmgPreconditioner final : public Preconditioner {
 
   Settings settings_;
   AmgHierarchy hierarchy_;
-  StrongCouplingApproximation approximation_;
-  bool dropsWeakCouplings_ = false;
   BlockSparseMatrix finest_;
-  std::vector<int> gatherOffsets_;  // 3 per block of finest_: offset of entry (3i, 3j + c) in the source matrix
+  // Per block of A in its storage order (column block by column block): its slot in finest_, or
+  // one of these for a dropped (weak) pair.
+  static constexpr int kDroppedFirstSeen = -1;   // block (j, i) of column block i, j < i: compensated here
+  static constexpr int kDroppedSecondSeen = -2;  // its mirror (j > i): skipped
+  std::vector<int> blockCode_;
+  std::vector<int> diagonalSlot_;   // per vertex: slot of (i, i) in finest_
+  std::vector<Mat3> compensation_;  // per vertex: the dropped pairs' sum for its diagonal block
   int analyzedPatternVersion_ = -1;
   Eigen::Index analyzedSize_ = -1;
   int fullSetups_ = 0;

@@ -13,6 +13,7 @@
 #include "integrate/block_jacobi_preconditioner.h"
 #include "integrate/linear_solver.h"
 #include "integrate/preconditioned_cg.h"
+#include "integrate/strong_coupling_approximation.h"
 #include "scene/scene_json.h"
 #include "sim/cloth.h"
 #include "sim/world.h"
@@ -103,6 +104,27 @@ TEST(AmgPreconditioner, VCycleIsSymmetricPositiveDefiniteOnAClothSystem) {
     EXPECT_GT(u.dot(mu), 0.0);
     EXPECT_GT(v.dot(mv), 0.0);
   }
+}
+
+TEST(AmgPreconditioner, FinestLevelIsTheStrongCouplingApproximation) {
+  // The multigrid gathers its finest level straight from A, compensating the dropped hinge wings
+  // itself: it must be the matrix StrongCouplingApproximation builds for the lagged Cholesky.
+  const ClothSystem system = movingSheetSystem(16, 10);
+  ASSERT_FALSE(system.A.weakPairs().empty());
+  StrongCouplingApproximation approximation;
+  approximation.setPattern(system.A);
+  approximation.refill(system.A);
+  const Eigen::MatrixXd expected = Eigen::MatrixXd(approximation.matrix());
+  AmgPreconditioner amg;
+  amg.prepare(system.A);
+  const BlockSparseMatrix& finest = amg.hierarchy().level(0).A;
+  Eigen::MatrixXd gathered = Eigen::MatrixXd::Zero(expected.rows(), expected.cols());
+  for (int i = 0; i < finest.blockRows; ++i)
+    for (int k = finest.rowStart[i]; k < finest.rowStart[i + 1]; ++k)
+      gathered.block<3, 3>(3 * i, 3 * finest.column[k]) = finest.blocks[k];
+  EXPECT_LE((gathered - expected).cwiseAbs().maxCoeff(), 1e-12 * expected.cwiseAbs().maxCoeff());
+  // Same pattern: the dropped pairs are not stored.
+  EXPECT_EQ(9 * static_cast<Eigen::Index>(finest.blockCount()), approximation.matrix().nonZeros());
 }
 
 TEST(AmgPreconditioner, CgReachesTheDirectSolversAnswerOnAMovingSheet) {
