@@ -122,9 +122,11 @@ void AmgPreconditioner::prepare(const SystemMatrix& A) {
   if (patternChanged || hierarchy_.levelCount() == 0) {
     hierarchy_.build(finest_);
     ++fullSetups_;
+    if (settings_.singlePrecisionCycle) floatCycle_.build(hierarchy_);
   } else {
     hierarchy_.refresh(finest_, threads_);
   }
+  if (settings_.singlePrecisionCycle) floatCycle_.refresh(hierarchy_, threads_);
 }
 
 void AmgPreconditioner::cycle(int l, const Eigen::VectorXd& b, Eigen::VectorXd& x) {
@@ -157,6 +159,10 @@ void AmgPreconditioner::cycle(int l, const Eigen::VectorXd& b, Eigen::VectorXd& 
 void AmgPreconditioner::apply(const Eigen::VectorXd& inR, Eigen::VectorXd& outZ) {
   if (hierarchy_.levelCount() == 0) {  // not prepared: M = I
     outZ = inR;
+    return;
+  }
+  if (settings_.singlePrecisionCycle) {
+    floatCycle_.apply(hierarchy_, inR, outZ, settings_.smoothingSweeps, threads_);
     return;
   }
   cycle(0, inR, outZ);

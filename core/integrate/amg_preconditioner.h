@@ -25,6 +25,7 @@
 #include <algorithm>
 #include <vector>
 
+#include "integrate/amg_float_cycle.h"
 #include "integrate/amg_hierarchy.h"
 #include "integrate/block_sparse_matrix.h"
 #include "integrate/preconditioner.h"
@@ -37,6 +38,7 @@ class AmgPreconditioner final : public Preconditioner {
   struct Settings {
     AmgSettings hierarchy;
     int smoothingSweeps = 1;  // block Gauss-Seidel sweeps before and after each coarse correction
+    bool singlePrecisionCycle = true;  // the V-cycle in float (amg_float_cycle.h); the setup stays in double
   };
 
   AmgPreconditioner() : AmgPreconditioner(Settings{}) {}
@@ -60,6 +62,7 @@ class AmgPreconditioner final : public Preconditioner {
 
   Settings settings_;
   AmgHierarchy hierarchy_;
+  AmgFloatCycle floatCycle_;
   BlockSparseMatrix finest_;
   // Per block of A in its storage order (column block by column block): its slot in finest_, or
   // one of these for a dropped (weak) pair.

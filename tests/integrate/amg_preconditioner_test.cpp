@@ -88,22 +88,54 @@ int iterationsToTolerance(const ClothSystem& system, Preconditioner& preconditio
 }
 
 TEST(AmgPreconditioner, VCycleIsSymmetricPositiveDefiniteOnAClothSystem) {
+  // In double to rounding; in single precision (the default cycle, amg_float_cycle.h) to float
+  // rounding, which the CG's double arithmetic tolerates (next test).
   const ClothSystem system = movingSheetSystem(24, 15);
-  AmgPreconditioner amg;
-  amg.prepare(system.A);
-  ASSERT_GE(amg.hierarchy().levelCount(), 2);
-  EXPECT_TRUE(amg.hierarchy().coarsestFactored());
-  const Eigen::Index size = system.b.size();
-  for (unsigned seed = 1; seed <= 3; ++seed) {
-    const Eigen::VectorXd u = randomVector(size, seed), v = randomVector(size, 100 + seed);
-    Eigen::VectorXd mu, mv;
-    amg.apply(u, mu);
-    amg.apply(v, mv);
-    // u^T M^-1 v = v^T M^-1 u, to rounding.
-    EXPECT_NEAR(u.dot(mv), v.dot(mu), 1e-10 * u.norm() * mv.norm());
-    EXPECT_GT(u.dot(mu), 0.0);
-    EXPECT_GT(v.dot(mv), 0.0);
+  for (const bool singlePrecision : {false, true}) {
+    AmgPreconditioner::Settings settings;
+    settings.singlePrecisionCycle = singlePrecision;
+    AmgPreconditioner amg(settings);
+    amg.prepare(system.A);
+    ASSERT_GE(amg.hierarchy().levelCount(), 2);
+    EXPECT_TRUE(amg.hierarchy().coarsestFactored());
+    const Eigen::Index size = system.b.size();
+    const double symmetry = singlePrecision ? 1e-5 : 1e-10;
+    for (unsigned seed = 1; seed <= 3; ++seed) {
+      const Eigen::VectorXd u = randomVector(size, seed), v = randomVector(size, 100 + seed);
+      Eigen::VectorXd mu, mv;
+      amg.apply(u, mu);
+      amg.apply(v, mv);
+      // u^T M^-1 v = v^T M^-1 u, to rounding.
+      EXPECT_NEAR(u.dot(mv), v.dot(mu), symmetry * u.norm() * mv.norm()) << (singlePrecision ? "float" : "double");
+      EXPECT_GT(u.dot(mu), 0.0);
+      EXPECT_GT(v.dot(mv), 0.0);
+    }
   }
+}
+
+TEST(AmgPreconditioner, SinglePrecisionCycleIsTheDoubleCycleToFloatRounding) {
+  const ClothSystem system = movingSheetSystem(32, 20);
+  AmgPreconditioner::Settings settings;
+  settings.singlePrecisionCycle = false;
+  AmgPreconditioner exact(settings);
+  settings.singlePrecisionCycle = true;
+  AmgPreconditioner single(settings);
+  exact.prepare(system.A);
+  single.prepare(system.A);
+  for (unsigned seed = 1; seed <= 3; ++seed) {
+    const Eigen::VectorXd r = randomVector(system.b.size(), seed);
+    Eigen::VectorXd zExact, zSingle;
+    exact.apply(r, zExact);
+    single.apply(r, zSingle);
+    EXPECT_LT((zSingle - zExact).norm(), 1e-5 * zExact.norm());
+  }
+  // And the CG needs as many iterations with either, to a tolerance far below float's epsilon.
+  PreconditionedConjugateGradient cg(1e-10, 1000);
+  Eigen::VectorXd xExact = Eigen::VectorXd::Zero(system.b.size()), xSingle = xExact;
+  const LinearSolveResult withExact = cg.solve(system.A, system.b, 0.0, exact, xExact);
+  const LinearSolveResult withSingle = cg.solve(system.A, system.b, 0.0, single, xSingle);
+  EXPECT_TRUE(withSingle.converged);
+  EXPECT_LE(withSingle.iterations, withExact.iterations + 1);
 }
 
 TEST(AmgPreconditioner, FinestLevelIsTheStrongCouplingApproximation) {
@@ -198,7 +230,8 @@ TEST(AmgPreconditioner, RebuildsAfterThePatternGrowsAsInATear) {
 
 TEST(AmgPreconditioner, DegenerateHierarchiesStillSolve) {
   // Every vertex pinned (identity rows, no couplings): nothing to coarsen, too large for the dense
-  // solve; the sweeps alone are exact on a block diagonal matrix.
+  // solve; the sweeps alone are exact on a block diagonal matrix (in double; the single-precision
+  // cycle to float rounding, which costs the CG one more iteration to 1e-12).
   SystemMatrix pinned;
   pinned.setPattern(500, {{0, 1}, {1, 2}}, {});
   pinned.setZero();
@@ -211,7 +244,14 @@ TEST(AmgPreconditioner, DegenerateHierarchiesStillSolve) {
   EXPECT_EQ(amg.hierarchy().levelCount(), 1);
   EXPECT_FALSE(amg.hierarchy().coarsestFactored());
   EXPECT_TRUE(diagonal.converged);
-  EXPECT_EQ(diagonal.iterations, 1);
+  EXPECT_LE(diagonal.iterations, 2);
+  AmgPreconditioner::Settings doubleCycle;
+  doubleCycle.singlePrecisionCycle = false;
+  AmgPreconditioner exactSweeps(doubleCycle);
+  x = Eigen::VectorXd::Zero(b.size());
+  const LinearSolveResult inDouble = cg.solve(pinned, b, 0.0, exactSweeps, x);
+  EXPECT_TRUE(inDouble.converged);
+  EXPECT_EQ(inDouble.iterations, 1);
 
   // A system no larger than the coarsest level: the dense factor solves it at once.
   const ClothSystem small = movingSheetSystem(6, 5);
