@@ -1,6 +1,7 @@
 #pragma once
 // The roofline of `weft bench`: how close the CG's matrix-vector product comes to the machine's
-// memory bandwidth. The product is bandwidth-bound (two flops per 12 bytes of matrix), so its
+// memory bandwidth. The product streams ~8.4 bytes of matrix per two flops (3x3 blocks read from the
+// column storage: a value and a ninth of a row index per nonzero), so its
 // achieved bytes per second against a measured triad bandwidth (McCalpin's STREAM triad,
 // a[i] = b[i] + s c[i]) says how much faster it could get at best.
 #include <filesystem>

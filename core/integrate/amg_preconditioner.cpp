@@ -49,37 +49,70 @@ void residualAfterOneForwardSweep(const AmgHierarchy::Level& level, const Eigen:
 }  // namespace
 
 void AmgPreconditioner::analyze(const SystemMatrix& A) {
-  dropsWeakCouplings_ = !A.weakPairs().empty();
-  if (dropsWeakCouplings_) approximation_.setPattern(A);
-  const SystemMatrix::Sparse& source = dropsWeakCouplings_ ? approximation_.matrix() : A.matrix();
-  // Row i of the (symmetric) block pattern = the block rows of column 3i.
+  // A's pattern is made of whole 3x3 blocks (SystemMatrix), symmetric: the blocks of row i are
+  // those of column block i (columns 3i .. 3i+2, which hold the same rows).
+  const SystemMatrix::Sparse& source = A.matrix();
+  const int* outer = source.outerIndexPtr();
+  const int* rows = source.innerIndexPtr();
+  const std::vector<std::pair<int, int>>& weak = A.weakPairs();  // (i < j), sorted
   const int n = A.vertexCount();
   std::vector<std::vector<int>> columnsOfRow(n);
   for (int i = 0; i < n; ++i)
-    for (int k = source.outerIndexPtr()[3 * i]; k < source.outerIndexPtr()[3 * i + 1]; ++k)
-      columnsOfRow[i].push_back(source.innerIndexPtr()[k] / 3);
+    for (int k = outer[3 * i]; k < outer[3 * i + 1]; k += 3) {
+      const int j = rows[k] / 3;
+      if (!std::binary_search(weak.begin(), weak.end(), std::make_pair(std::min(i, j), std::max(i, j))))
+        columnsOfRow[i].push_back(j);
+    }
   finest_.setPattern(n, n, columnsOfRow);
-  gatherOffsets_.resize(3 * static_cast<size_t>(finest_.blockCount()));
-  const int* rows = source.innerIndexPtr();
-  for (int i = 0; i < n; ++i)
-    for (int s = finest_.rowStart[i]; s < finest_.rowStart[i + 1]; ++s)
-      for (int c = 0; c < 3; ++c) {
-        const int col = 3 * finest_.column[s] + c;
-        const int* begin = rows + source.outerIndexPtr()[col];
-        const int* end = rows + source.outerIndexPtr()[col + 1];
-        gatherOffsets_[3 * s + c] = static_cast<int>(std::lower_bound(begin, end, 3 * i) - rows);
-      }
+  blockCode_.clear();
+  diagonalSlot_.assign(n, -1);
+  for (int i = 0; i < n; ++i) {
+    diagonalSlot_[i] = finest_.find(i, i);
+    for (int k = outer[3 * i]; k < outer[3 * i + 1]; k += 3) {
+      const int j = rows[k] / 3;
+      const int slot = finest_.find(i, j);
+      blockCode_.push_back(slot >= 0 ? slot : j < i ? kDroppedFirstSeen : kDroppedSecondSeen);
+    }
+  }
+  compensation_.assign(n, Mat3::Zero());
   analyzedPatternVersion_ = A.patternVersion();
   analyzedSize_ = A.matrix().rows();
 }
 
 void AmgPreconditioner::gather(const SystemMatrix& A) {
-  if (dropsWeakCouplings_) approximation_.refill(A);
-  const double* values = dropsWeakCouplings_ ? approximation_.matrix().valuePtr() : A.matrix().valuePtr();
-#pragma omp parallel for num_threads(finest_.threadsFor(threads_)) schedule(static)
-  for (int s = 0; s < finest_.blockCount(); ++s)
-    for (int c = 0; c < 3; ++c)
-      for (int r = 0; r < 3; ++r) finest_.blocks[s](r, c) = values[gatherOffsets_[3 * s + c] + r];
+  // One pass over A, column block by column block: the finest level's row i is column block i
+  // (A is symmetric), each block read as three runs of three values. A dropped pair (j, i), j < i,
+  // met in column block i, adds its compensation (strong_coupling_approximation.h) to both
+  // diagonals, summed apart and added at the end. Same matrix as StrongCouplingApproximation
+  // builds for the lagged Cholesky, without its intermediate copy of A (measured: that copy and
+  // its scattered reads were a quarter of the numeric setup at 64²).
+  const int* outer = A.matrix().outerIndexPtr();
+  const double* values = A.matrix().valuePtr();
+  const int n = finest_.blockRows;
+  std::fill(compensation_.begin(), compensation_.end(), Mat3::Zero());
+  const int* rows = A.matrix().innerIndexPtr();
+  const int* code = blockCode_.data();
+  for (int i = 0; i < n; ++i) {
+    const double* v[3] = {values + outer[3 * i], values + outer[3 * i + 1], values + outer[3 * i + 2]};
+    const int length = outer[3 * i + 1] - outer[3 * i];
+    for (int k = 0; k < length; k += 3, ++code) {
+      if (*code >= 0) {  // block (i, j)(r, c) = A(3j + c, 3i + r): row r is column 3i + r's run
+        Mat3& block = finest_.blocks[*code];
+        for (int r = 0; r < 3; ++r)
+          for (int c = 0; c < 3; ++c) block(r, c) = v[r][k + c];
+      } else if (*code == kDroppedFirstSeen) {  // B = A_ji, j < i: B(r, c) = A(3j + r, 3i + c)
+        Mat3 B;
+        for (int c = 0; c < 3; ++c)
+          for (int r = 0; r < 3; ++r) B(r, c) = v[c][k + r];
+        Mat3 forJ, forI;
+        if (!strongCouplingCompensation(B, forJ, forI)) continue;
+        compensation_[rows[outer[3 * i] + k] / 3] += forJ;
+        compensation_[i] += forI;
+      }
+    }
+  }
+  for (int i = 0; i < n; ++i)
+    if (diagonalSlot_[i] >= 0) finest_.blocks[diagonalSlot_[i]] += compensation_[i];
 }
 
 void AmgPreconditioner::prepare(const SystemMatrix& A) {
@@ -89,9 +122,11 @@ void AmgPreconditioner::prepare(const SystemMatrix& A) {
   if (patternChanged || hierarchy_.levelCount() == 0) {
     hierarchy_.build(finest_);
     ++fullSetups_;
+    if (settings_.singlePrecisionCycle) floatCycle_.build(hierarchy_);
   } else {
     hierarchy_.refresh(finest_, threads_);
   }
+  if (settings_.singlePrecisionCycle) floatCycle_.refresh(hierarchy_, threads_);
 }
 
 void AmgPreconditioner::cycle(int l, const Eigen::VectorXd& b, Eigen::VectorXd& x) {
@@ -124,6 +159,10 @@ void AmgPreconditioner::cycle(int l, const Eigen::VectorXd& b, Eigen::VectorXd& 
 void AmgPreconditioner::apply(const Eigen::VectorXd& inR, Eigen::VectorXd& outZ) {
   if (hierarchy_.levelCount() == 0) {  // not prepared: M = I
     outZ = inR;
+    return;
+  }
+  if (settings_.singlePrecisionCycle) {
+    floatCycle_.apply(hierarchy_, inR, outZ, settings_.smoothingSweeps, threads_);
     return;
   }
   cycle(0, inR, outZ);

@@ -25,6 +25,7 @@
 #include <algorithm>
 #include <vector>
 
+#include "integrate/amg_float_cycle.h"
 #include "integrate/amg_hierarchy.h"
 #include "integrate/block_sparse_matrix.h"
 #include "integrate/preconditioner.h"
@@ -37,6 +38,7 @@ class AmgPreconditioner final : public Preconditioner {
   struct Settings {
     AmgSettings hierarchy;
     int smoothingSweeps = 1;  // block Gauss-Seidel sweeps before and after each coarse correction
+    bool singlePrecisionCycle = true;  // the V-cycle in float (amg_float_cycle.h); the setup stays in double
   };
 
   AmgPreconditioner() : AmgPreconditioner(Settings{}) {}
@@ -60,10 +62,15 @@ class AmgPreconditioner final : public Preconditioner {
 
   Settings settings_;
   AmgHierarchy hierarchy_;
-  StrongCouplingApproximation approximation_;
-  bool dropsWeakCouplings_ = false;
+  AmgFloatCycle floatCycle_;
   BlockSparseMatrix finest_;
-  std::vector<int> gatherOffsets_;  // 3 per block of finest_: offset of entry (3i, 3j + c) in the source matrix
+  // Per block of A in its storage order (column block by column block): its slot in finest_, or
+  // one of these for a dropped (weak) pair.
+  static constexpr int kDroppedFirstSeen = -1;   // block (j, i) of column block i, j < i: compensated here
+  static constexpr int kDroppedSecondSeen = -2;  // its mirror (j > i): skipped
+  std::vector<int> blockCode_;
+  std::vector<int> diagonalSlot_;   // per vertex: slot of (i, i) in finest_
+  std::vector<Mat3> compensation_;  // per vertex: the dropped pairs' sum for its diagonal block
   int analyzedPatternVersion_ = -1;
   Eigen::Index analyzedSize_ = -1;
   int fullSetups_ = 0;

@@ -6,12 +6,14 @@
 namespace weft {
 namespace {
 
+constexpr Eigen::Index kMinimumColumnsPerThread = 6000;  // below this the fork costs more than it saves
+
 // outY = A^T x (= A x for the symmetric A) as Eigen computes it on one thread (a dot product of
 // each column of A with x), split into fixed ranges of columns: the same bits for any thread count.
+// The fallback of blockProduct below for a pattern that is not made of whole 3x3 blocks.
 void multiplyTransposed(const SystemMatrix::Sparse& A, const Eigen::VectorXd& x, Eigen::VectorXd& outY, int threads) {
   const Eigen::Index n = A.cols();
   outY.resize(n);
-  constexpr Eigen::Index kMinimumColumnsPerThread = 6000;  // below this the fork costs more than it saves
   const int parts = static_cast<int>(std::clamp<Eigen::Index>(n / kMinimumColumnsPerThread, 1, std::max(threads, 1)));
   if (parts == 1) {
     outY.noalias() = A.transpose() * x;
@@ -25,14 +27,109 @@ void multiplyTransposed(const SystemMatrix::Sparse& A, const Eigen::VectorXd& x,
   }
 }
 
+// One block column's three dot products from block k = begin on (k counts entries of column 3i),
+// each continuing its running sum.
+inline void blockColumnSums(const double* v0, const double* v1, const double* v2, const int* row, int begin, int end,
+                            const double* in, double& t0, double& t1, double& t2) {
+  for (int k = begin; k < end; k += 3) {
+    const double* xj = in + row[k];
+    const double x0 = xj[0], x1 = xj[1], x2 = xj[2];
+    t0 += v0[k] * x0;
+    t1 += v1[k] * x0;
+    t2 += v2[k] * x0;
+    t0 += v0[k + 1] * x1;
+    t1 += v1[k + 1] * x1;
+    t2 += v2[k + 1] * x1;
+    t0 += v0[k + 2] * x2;
+    t1 += v1[k + 2] * x2;
+    t2 += v2[k + 2] * x2;
+  }
+}
+
+// outY(3i + r) for r = 0..2: the dot products of columns 3i, 3i+1, 3i+2 of A with x, read as 3x3
+// blocks. A system matrix's pattern is made of whole blocks (SystemMatrix::setPattern), so the
+// three columns of a vertex hold the same rows, in runs of three: one row index per block instead
+// of one per entry (12 -> 8.4 bytes per nonzero streamed), x read as contiguous triples, and three
+// independent sums per block column instead of one dependency chain. Each sum adds the same
+// products in the same order (rows ascending) as Eigen's dot product in multiplyTransposed,
+// starting from 0 and added to a zeroed result: the same bits as Eigen, the default solver's
+// results unchanged (tested).
+void blockColumnsProduct(const SystemMatrix::Sparse& A, const Eigen::VectorXd& x, Eigen::VectorXd& outY, int firstBlock,
+                         int endBlock) {
+  const int* outer = A.outerIndexPtr();
+  const int* rows = A.innerIndexPtr();
+  const double* values = A.valuePtr();
+  const double* in = x.data();
+  double* out = outY.data();
+  // One block column at a time (two interleaved, six chains instead of three, measured no faster:
+  // 0.113 against 0.107 ms per product at 64²).
+  for (int i = firstBlock; i < endBlock; ++i) {
+    // Eigen adds each dot product to a zeroed result (0 + -0 = +0): so do we.
+    double t0 = 0.0, t1 = 0.0, t2 = 0.0;
+    blockColumnSums(values + outer[3 * i], values + outer[3 * i + 1], values + outer[3 * i + 2], rows + outer[3 * i], 0,
+                    outer[3 * i + 1] - outer[3 * i], in, t0, t1, t2);
+    out[3 * i] = 0.0 + t0;
+    out[3 * i + 1] = 0.0 + t1;
+    out[3 * i + 2] = 0.0 + t2;
+  }
+}
+
 }  // namespace
+
+bool PreconditionedConjugateGradient::hasWholeBlocks(const SystemMatrix::Sparse& A) {
+  // Every vertex's three columns: the same length, a multiple of three, rows in runs 3j, 3j+1,
+  // 3j+2 (the columns are sorted), and the same rows in all three.
+  if (A.rows() != A.cols() || A.cols() % 3 != 0 || !A.isCompressed()) return false;
+  const int* outer = A.outerIndexPtr();
+  const int* rows = A.innerIndexPtr();
+  for (Eigen::Index i = 0; i < A.cols() / 3; ++i) {
+    const int length = outer[3 * i + 1] - outer[3 * i];
+    if (length % 3 != 0 || outer[3 * i + 2] - outer[3 * i + 1] != length || outer[3 * i + 3] - outer[3 * i + 2] != length)
+      return false;
+    for (int k = 0; k < length; ++k) {
+      const int row = rows[outer[3 * i] + k];
+      if (row % 3 != k % 3 || (k % 3 != 0 && row != rows[outer[3 * i] + k - 1] + 1)) return false;
+      if (rows[outer[3 * i + 1] + k] != row || rows[outer[3 * i + 2] + k] != row) return false;
+    }
+  }
+  return true;
+}
+
+void PreconditionedConjugateGradient::multiply(const SystemMatrix& A, const Eigen::VectorXd& x, Eigen::VectorXd& outY) {
+  // A pattern changes only with its version (SystemMatrix); the storage's address, size and
+  // count tell one matrix from another of the same version.
+  if (A.patternVersion() != checkedPatternVersion_ || A.matrix().cols() != checkedSize_ ||
+      A.matrix().nonZeros() != checkedNonZeros_ || A.matrix().innerIndexPtr() != checkedIndices_) {
+    wholeBlocks_ = hasWholeBlocks(A.matrix());
+    checkedPatternVersion_ = A.patternVersion();
+    checkedSize_ = A.matrix().cols();
+    checkedNonZeros_ = A.matrix().nonZeros();
+    checkedIndices_ = A.matrix().innerIndexPtr();
+  }
+  if (!wholeBlocks_) {
+    multiplyTransposed(A.matrix(), x, outY, threads_);
+    return;
+  }
+  const Eigen::Index n = A.matrix().cols();
+  outY.resize(n);
+  const int blocks = static_cast<int>(n / 3);
+  const int parts = static_cast<int>(std::clamp<Eigen::Index>(n / kMinimumColumnsPerThread, 1, std::max(threads_, 1)));
+  if (parts == 1) {
+    blockColumnsProduct(A.matrix(), x, outY, 0, blocks);
+    return;
+  }
+#pragma omp parallel for num_threads(parts) schedule(static, 1)
+  for (int part = 0; part < parts; ++part)
+    blockColumnsProduct(A.matrix(), x, outY, static_cast<int>(static_cast<long>(blocks) * part / parts),
+                        static_cast<int>(static_cast<long>(blocks) * (part + 1) / parts));
+}
 
 LinearSolveResult PreconditionedConjugateGradient::solve(const SystemMatrix& A, const Eigen::VectorXd& b,
                                                         double rhsNormFloor, Preconditioner& preconditioner,
                                                         Eigen::VectorXd& x) {
   // A is symmetric and stored in full, so A = A^T. Eigen multiplies a column-major A^T by a vector
   // as dot products of A's columns with it (reads only); A itself would scatter into the result,
-  // whose store-to-load dependencies make it ~1.4x slower. Hence multiplyTransposed.
+  // whose store-to-load dependencies make it ~1.4x slower. Hence multiply() reads A's columns.
   LinearSolveResult result;
   const double scale = std::max(b.norm(), rhsNormFloor);
   if (!(scale > 0.0)) {  // b = 0 and no floor: the answer is exactly 0 (or b is not finite)
@@ -42,7 +139,7 @@ LinearSolveResult PreconditionedConjugateGradient::solve(const SystemMatrix& A, 
   }
   const double threshold = tolerance_ * scale;
 
-  multiplyTransposed(A.matrix(), x, residual_, threads_);
+  multiply(A, x, residual_);
   residual_ = b - residual_;
   double residualNorm = residual_.norm();
   if (residualNorm > threshold) {
@@ -51,7 +148,7 @@ LinearSolveResult PreconditionedConjugateGradient::solve(const SystemMatrix& A, 
     direction_ = preconditioned_;
     double rz = residual_.dot(preconditioned_);
     while (result.iterations < maxIterations_) {
-      multiplyTransposed(A.matrix(), direction_, product_, threads_);
+      multiply(A, direction_, product_);
       const double curvature = direction_.dot(product_);
       if (!(curvature > 0.0)) break;  // A (or M) not positive definite along the direction, or NaN
       const double alpha = rz / curvature;

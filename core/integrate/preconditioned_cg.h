@@ -31,8 +31,20 @@ class PreconditionedConjugateGradient {
   // products stay on one thread (a parallel sum would change its rounding with the thread count).
   void setThreads(int threads) { threads_ = threads; }
 
+  // outY = A x as the solve computes it: A's columns read as 3x3 blocks when its pattern is made
+  // of whole blocks (as SystemMatrix builds it; checked once per pattern), else Eigen's product;
+  // the same bits either way (a dot product of each column with x, rows in order).
+  void multiply(const SystemMatrix& A, const Eigen::VectorXd& x, Eigen::VectorXd& outY);
+  // A's pattern is made of whole 3x3 blocks: a vertex's three columns hold the same rows, in runs
+  // 3j, 3j+1, 3j+2.
+  static bool hasWholeBlocks(const SystemMatrix::Sparse& A);
+
  private:
   int threads_ = 1;
+  int checkedPatternVersion_ = -1;
+  Eigen::Index checkedSize_ = -1, checkedNonZeros_ = -1;
+  const int* checkedIndices_ = nullptr;
+  bool wholeBlocks_ = false;
   double tolerance_;
   int maxIterations_;
   Eigen::VectorXd residual_, preconditioned_, direction_, product_;

@@ -21,6 +21,24 @@ int entryOffset(const SystemMatrix::Sparse& m, int row, int col) {
 
 }  // namespace
 
+bool strongCouplingCompensation(const Mat3& B, Mat3& outForI, Mat3& outForJ) {
+  const double squaredNorm = B.squaredNorm();
+  if (squaredNorm == 0.0) return false;
+  // Lower bound of s1^2 = the largest eigenvalue of B^T B: Rayleigh quotient after a few power
+  // iterations (any unit vector gives a lower bound; these make it nearly tight).
+  const Mat3 BtB = B.transpose() * B;
+  Vec3 v = BtB.rowwise().sum();
+  if (v.squaredNorm() == 0.0) v = Vec3::UnitX();
+  for (int iteration = 0; iteration < 4; ++iteration) v = (BtB * v).normalized();
+  double largestSquared = v.dot(BtB * v);
+  if (!std::isfinite(largestSquared)) largestSquared = 0.0;  // then shift = norm: the plain bound, still safe
+  const double norm = std::sqrt(squaredNorm);
+  const double shift = std::sqrt(std::max(0.0, squaredNorm - largestSquared));
+  outForI = B * B.transpose() / norm + shift * Mat3::Identity();
+  outForJ = BtB / norm + shift * Mat3::Identity();
+  return true;
+}
+
 void StrongCouplingApproximation::setPattern(const SystemMatrix& A) {
   const SystemMatrix::Sparse& a = A.matrix();
   const std::vector<std::pair<int, int>>& weak = A.weakPairs();
@@ -78,20 +96,10 @@ void StrongCouplingApproximation::refill(const SystemMatrix& A) {
     Mat3 B;
     for (int c = 0; c < 3; ++c)
       for (int r = 0; r < 3; ++r) B(r, c) = source[droppedColumnOffsets_[3 * p + c] + r];
-    const double squaredNorm = B.squaredNorm();
-    if (squaredNorm == 0.0) continue;  // e.g. a pinned vertex: nothing was dropped
-    // Lower bound of s1^2 = the largest eigenvalue of B^T B: Rayleigh quotient after a few power
-    // iterations (any unit vector gives a lower bound; these make it nearly tight).
-    const Mat3 BtB = B.transpose() * B;
-    Vec3 v = BtB.rowwise().sum();
-    if (v.squaredNorm() == 0.0) v = Vec3::UnitX();
-    for (int iteration = 0; iteration < 4; ++iteration) v = (BtB * v).normalized();
-    double largestSquared = v.dot(BtB * v);
-    if (!std::isfinite(largestSquared)) largestSquared = 0.0;  // then shift = norm: the plain bound, still safe
-    const double norm = std::sqrt(squaredNorm);
-    const double shift = std::sqrt(std::max(0.0, squaredNorm - largestSquared));
-    addToBlock(&compensatedColumns_[6 * p], B * B.transpose() / norm + shift * Mat3::Identity());
-    addToBlock(&compensatedColumns_[6 * p + 3], BtB / norm + shift * Mat3::Identity());
+    Mat3 forI, forJ;
+    if (!strongCouplingCompensation(B, forI, forJ)) continue;  // e.g. a pinned vertex: nothing was dropped
+    addToBlock(&compensatedColumns_[6 * p], forI);
+    addToBlock(&compensatedColumns_[6 * p + 3], forJ);
   }
 }
 

@@ -22,6 +22,10 @@
 
 namespace weft {
 
+// What the diagonal blocks get for one dropped pair B = A_ij (the formula above): outForI is added
+// to A_ii, outForJ to A_jj. False (nothing to add) when B = 0.
+bool strongCouplingCompensation(const Mat3& B, Mat3& outForI, Mat3& outForJ);
+
 class StrongCouplingApproximation {
  public:
   // Builds M's pattern and the maps from A's storage. Call when A's pattern changed.

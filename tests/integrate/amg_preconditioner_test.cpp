@@ -13,6 +13,7 @@
 #include "integrate/block_jacobi_preconditioner.h"
 #include "integrate/linear_solver.h"
 #include "integrate/preconditioned_cg.h"
+#include "integrate/strong_coupling_approximation.h"
 #include "scene/scene_json.h"
 #include "sim/cloth.h"
 #include "sim/world.h"
@@ -87,22 +88,75 @@ int iterationsToTolerance(const ClothSystem& system, Preconditioner& preconditio
 }
 
 TEST(AmgPreconditioner, VCycleIsSymmetricPositiveDefiniteOnAClothSystem) {
+  // In double to rounding; in single precision (the default cycle, amg_float_cycle.h) to float
+  // rounding, which the CG's double arithmetic tolerates (next test).
   const ClothSystem system = movingSheetSystem(24, 15);
+  for (const bool singlePrecision : {false, true}) {
+    AmgPreconditioner::Settings settings;
+    settings.singlePrecisionCycle = singlePrecision;
+    AmgPreconditioner amg(settings);
+    amg.prepare(system.A);
+    ASSERT_GE(amg.hierarchy().levelCount(), 2);
+    EXPECT_TRUE(amg.hierarchy().coarsestFactored());
+    const Eigen::Index size = system.b.size();
+    const double symmetry = singlePrecision ? 1e-5 : 1e-10;
+    for (unsigned seed = 1; seed <= 3; ++seed) {
+      const Eigen::VectorXd u = randomVector(size, seed), v = randomVector(size, 100 + seed);
+      Eigen::VectorXd mu, mv;
+      amg.apply(u, mu);
+      amg.apply(v, mv);
+      // u^T M^-1 v = v^T M^-1 u, to rounding.
+      EXPECT_NEAR(u.dot(mv), v.dot(mu), symmetry * u.norm() * mv.norm()) << (singlePrecision ? "float" : "double");
+      EXPECT_GT(u.dot(mu), 0.0);
+      EXPECT_GT(v.dot(mv), 0.0);
+    }
+  }
+}
+
+TEST(AmgPreconditioner, SinglePrecisionCycleIsTheDoubleCycleToFloatRounding) {
+  const ClothSystem system = movingSheetSystem(32, 20);
+  AmgPreconditioner::Settings settings;
+  settings.singlePrecisionCycle = false;
+  AmgPreconditioner exact(settings);
+  settings.singlePrecisionCycle = true;
+  AmgPreconditioner single(settings);
+  exact.prepare(system.A);
+  single.prepare(system.A);
+  for (unsigned seed = 1; seed <= 3; ++seed) {
+    const Eigen::VectorXd r = randomVector(system.b.size(), seed);
+    Eigen::VectorXd zExact, zSingle;
+    exact.apply(r, zExact);
+    single.apply(r, zSingle);
+    EXPECT_LT((zSingle - zExact).norm(), 1e-5 * zExact.norm());
+  }
+  // And the CG needs as many iterations with either, to a tolerance far below float's epsilon.
+  PreconditionedConjugateGradient cg(1e-10, 1000);
+  Eigen::VectorXd xExact = Eigen::VectorXd::Zero(system.b.size()), xSingle = xExact;
+  const LinearSolveResult withExact = cg.solve(system.A, system.b, 0.0, exact, xExact);
+  const LinearSolveResult withSingle = cg.solve(system.A, system.b, 0.0, single, xSingle);
+  EXPECT_TRUE(withSingle.converged);
+  EXPECT_LE(withSingle.iterations, withExact.iterations + 1);
+}
+
+TEST(AmgPreconditioner, FinestLevelIsTheStrongCouplingApproximation) {
+  // The multigrid gathers its finest level straight from A, compensating the dropped hinge wings
+  // itself: it must be the matrix StrongCouplingApproximation builds for the lagged Cholesky.
+  const ClothSystem system = movingSheetSystem(16, 10);
+  ASSERT_FALSE(system.A.weakPairs().empty());
+  StrongCouplingApproximation approximation;
+  approximation.setPattern(system.A);
+  approximation.refill(system.A);
+  const Eigen::MatrixXd expected = Eigen::MatrixXd(approximation.matrix());
   AmgPreconditioner amg;
   amg.prepare(system.A);
-  ASSERT_GE(amg.hierarchy().levelCount(), 2);
-  EXPECT_TRUE(amg.hierarchy().coarsestFactored());
-  const Eigen::Index size = system.b.size();
-  for (unsigned seed = 1; seed <= 3; ++seed) {
-    const Eigen::VectorXd u = randomVector(size, seed), v = randomVector(size, 100 + seed);
-    Eigen::VectorXd mu, mv;
-    amg.apply(u, mu);
-    amg.apply(v, mv);
-    // u^T M^-1 v = v^T M^-1 u, to rounding.
-    EXPECT_NEAR(u.dot(mv), v.dot(mu), 1e-10 * u.norm() * mv.norm());
-    EXPECT_GT(u.dot(mu), 0.0);
-    EXPECT_GT(v.dot(mv), 0.0);
-  }
+  const BlockSparseMatrix& finest = amg.hierarchy().level(0).A;
+  Eigen::MatrixXd gathered = Eigen::MatrixXd::Zero(expected.rows(), expected.cols());
+  for (int i = 0; i < finest.blockRows; ++i)
+    for (int k = finest.rowStart[i]; k < finest.rowStart[i + 1]; ++k)
+      gathered.block<3, 3>(3 * i, 3 * finest.column[k]) = finest.blocks[k];
+  EXPECT_LE((gathered - expected).cwiseAbs().maxCoeff(), 1e-12 * expected.cwiseAbs().maxCoeff());
+  // Same pattern: the dropped pairs are not stored.
+  EXPECT_EQ(9 * static_cast<Eigen::Index>(finest.blockCount()), approximation.matrix().nonZeros());
 }
 
 TEST(AmgPreconditioner, CgReachesTheDirectSolversAnswerOnAMovingSheet) {
@@ -176,7 +230,8 @@ TEST(AmgPreconditioner, RebuildsAfterThePatternGrowsAsInATear) {
 
 TEST(AmgPreconditioner, DegenerateHierarchiesStillSolve) {
   // Every vertex pinned (identity rows, no couplings): nothing to coarsen, too large for the dense
-  // solve; the sweeps alone are exact on a block diagonal matrix.
+  // solve; the sweeps alone are exact on a block diagonal matrix (in double; the single-precision
+  // cycle to float rounding, which costs the CG one more iteration to 1e-12).
   SystemMatrix pinned;
   pinned.setPattern(500, {{0, 1}, {1, 2}}, {});
   pinned.setZero();
@@ -189,7 +244,14 @@ TEST(AmgPreconditioner, DegenerateHierarchiesStillSolve) {
   EXPECT_EQ(amg.hierarchy().levelCount(), 1);
   EXPECT_FALSE(amg.hierarchy().coarsestFactored());
   EXPECT_TRUE(diagonal.converged);
-  EXPECT_EQ(diagonal.iterations, 1);
+  EXPECT_LE(diagonal.iterations, 2);
+  AmgPreconditioner::Settings doubleCycle;
+  doubleCycle.singlePrecisionCycle = false;
+  AmgPreconditioner exactSweeps(doubleCycle);
+  x = Eigen::VectorXd::Zero(b.size());
+  const LinearSolveResult inDouble = cg.solve(pinned, b, 0.0, exactSweeps, x);
+  EXPECT_TRUE(inDouble.converged);
+  EXPECT_EQ(inDouble.iterations, 1);
 
   // A system no larger than the coarsest level: the dense factor solves it at once.
   const ClothSystem small = movingSheetSystem(6, 5);
@@ -244,6 +306,36 @@ TEST(AmgPreconditioner, SolveIsTheSameBitsWithOneAndTwoThreads) {
   }
   EXPECT_EQ(iterations[0], iterations[1]);
   EXPECT_TRUE(answers[0] == answers[1]) << "largest difference " << (answers[0] - answers[1]).cwiseAbs().maxCoeff();
+}
+
+TEST(PreconditionedCg, BlockProductIsTheSameBitsAsEigensOnAnyThreadCount) {
+  // The CG reads A's columns as 3x3 blocks (preconditioned_cg.cpp); every sum must be Eigen's own,
+  // so that the default solver's trajectories (and the goldens) do not move. Pins included: their
+  // rows and columns hold explicit zeros.
+  const ClothSystem system = movingSheetSystem(64, 3);
+  ASSERT_TRUE(PreconditionedConjugateGradient::hasWholeBlocks(system.A.matrix()));
+  for (int seed : {1, 2}) {
+    Eigen::VectorXd x = randomVector(system.b.size(), seed);
+    x[7] = 0.0;
+    const Eigen::VectorXd eigen = system.A.matrix().transpose() * x;
+    for (int threads : {1, 2, 3}) {
+      PreconditionedConjugateGradient cg(1e-6, 10);
+      cg.setThreads(threads);
+      Eigen::VectorXd y;
+      cg.multiply(system.A, x, y);
+      EXPECT_TRUE(y == eigen) << threads << " threads, largest difference " << (y - eigen).cwiseAbs().maxCoeff();
+    }
+  }
+  // A pattern that is not made of whole blocks (an entry dropped) takes Eigen's product.
+  SystemMatrix partial = system.A;
+  partial.matrix().coeffRef(0, 1) = 0.0;
+  partial.matrix().prune(0.0, 0.0);
+  EXPECT_FALSE(PreconditionedConjugateGradient::hasWholeBlocks(partial.matrix()));
+  const Eigen::VectorXd x = randomVector(system.b.size(), 3);
+  PreconditionedConjugateGradient cg(1e-6, 10);
+  Eigen::VectorXd y;
+  cg.multiply(partial, x, y);
+  EXPECT_TRUE(y == Eigen::VectorXd(partial.matrix().transpose() * x));
 }
 
 TEST(AmgPreconditioner, TearingSheetSolvesEveryStepAndStaysDeterministic) {
