@@ -83,9 +83,10 @@ void AmgPreconditioner::gather(const SystemMatrix& A) {
   // One pass over A, column block by column block: the finest level's row i is column block i
   // (A is symmetric), each block read as three runs of three values. A dropped pair (j, i), j < i,
   // met in column block i, adds its compensation (strong_coupling_approximation.h) to both
-  // diagonals, summed apart and added at the end. Same matrix as StrongCouplingApproximation
-  // builds for the lagged Cholesky, without its intermediate copy of A (measured: that copy and
-  // its scattered reads were a quarter of the numeric setup at 64²).
+  // diagonals, summed apart and added at the end. The matrix StrongCouplingApproximation builds
+  // for the lagged Cholesky (to rounding: the compensation's fast form), without its intermediate
+  // copy of A (measured: that copy and its scattered reads were a quarter of the numeric setup at
+  // 64²).
   const int* outer = A.matrix().outerIndexPtr();
   const double* values = A.matrix().valuePtr();
   const int n = finest_.blockRows;
@@ -105,7 +106,7 @@ void AmgPreconditioner::gather(const SystemMatrix& A) {
         for (int c = 0; c < 3; ++c)
           for (int r = 0; r < 3; ++r) B(r, c) = v[c][k + r];
         Mat3 forJ, forI;
-        if (!strongCouplingCompensation(B, forJ, forI)) continue;
+        if (!strongCouplingCompensationFast(B, forJ, forI)) continue;
         compensation_[rows[outer[3 * i] + k] / 3] += forJ;
         compensation_[i] += forI;
       }

@@ -39,6 +39,24 @@ bool strongCouplingCompensation(const Mat3& B, Mat3& outForI, Mat3& outForJ) {
   return true;
 }
 
+bool strongCouplingCompensationFast(const Mat3& B, Mat3& outForI, Mat3& outForJ) {
+  const double squaredNorm = B.squaredNorm();
+  if (squaredNorm == 0.0) return false;
+  const Mat3 BtB = B.transpose() * B;
+  const Mat3 scaled = BtB * (1.0 / squaredNorm);  // trace 1: eigenvalues in [0, 1], the largest >= 1/3
+  Vec3 v = scaled.rowwise().sum();
+  if (v.squaredNorm() == 0.0) v = Vec3::UnitX();
+  for (int iteration = 0; iteration < 4; ++iteration) v = scaled * v;  // shrinks by at most 3^-4
+  double largestSquared = squaredNorm * v.dot(scaled * v) / v.squaredNorm();
+  if (!std::isfinite(largestSquared)) largestSquared = 0.0;  // then shift = norm: the plain bound, still safe
+  const double norm = std::sqrt(squaredNorm);
+  const double inverseNorm = 1.0 / norm;
+  const double shift = std::sqrt(std::max(0.0, squaredNorm - largestSquared));
+  outForI = (B * B.transpose()) * inverseNorm + shift * Mat3::Identity();
+  outForJ = BtB * inverseNorm + shift * Mat3::Identity();
+  return true;
+}
+
 void StrongCouplingApproximation::setPattern(const SystemMatrix& A) {
   const SystemMatrix::Sparse& a = A.matrix();
   const std::vector<std::pair<int, int>>& weak = A.weakPairs();

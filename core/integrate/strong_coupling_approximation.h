@@ -25,6 +25,12 @@ namespace weft {
 // What the diagonal blocks get for one dropped pair B = A_ij (the formula above): outForI is added
 // to A_ii, outForJ to A_jj. False (nothing to add) when B = 0.
 bool strongCouplingCompensation(const Mat3& B, Mat3& outForI, Mat3& outForJ);
+// The same bound with two divisions and two square roots instead of ~30 and 6 (the power
+// iterations run on B^T B / s^2, whose entries are at most 1 and largest eigenvalue at least 1/3,
+// unnormalized; the Rayleigh quotient does not depend on the iterate's length). Rounds
+// differently, so the lagged Cholesky, whose results the goldens hold, keeps the function above;
+// the multigrid uses this one.
+bool strongCouplingCompensationFast(const Mat3& B, Mat3& outForI, Mat3& outForJ);
 
 class StrongCouplingApproximation {
  public:

@@ -154,7 +154,9 @@ TEST(AmgPreconditioner, FinestLevelIsTheStrongCouplingApproximation) {
   for (int i = 0; i < finest.blockRows; ++i)
     for (int k = finest.rowStart[i]; k < finest.rowStart[i + 1]; ++k)
       gathered.block<3, 3>(3 * i, 3 * finest.column[k]) = finest.blocks[k];
-  EXPECT_LE((gathered - expected).cwiseAbs().maxCoeff(), 1e-12 * expected.cwiseAbs().maxCoeff());
+  // To rounding: the multigrid computes the compensation in its fast form (the shift of a nearly
+  // rank-one hinge block carries ~1e-8 of the block's norm either way).
+  EXPECT_LE((gathered - expected).cwiseAbs().maxCoeff(), 1e-9 * expected.cwiseAbs().maxCoeff());
   // Same pattern: the dropped pairs are not stored.
   EXPECT_EQ(9 * static_cast<Eigen::Index>(finest.blockCount()), approximation.matrix().nonZeros());
 }
