@@ -3,10 +3,12 @@
 // (Eigen's and by blocks), the numeric refresh, one V-cycle in double and in float, and a PCG
 // solve from zero (tolerance from $TOL, default 1e-6); medians of repeats in thread CPU time (a
 // descheduled thread's wait does not count on the shared machine). `amg_profile 64 product`,
-// `... cycle` and `... refresh` loop one part alone (for perf). Built by hand from the top of the
-// worktree after building the core library:
-//   g++ -O3 -DNDEBUG -std=c++20 -fopenmp -DEIGEN_DONT_PARALLELIZE -DWEFT_SOURCE_DIR=\"$PWD\" -Icore \
+// `... cycle` and `... refresh` loop one part alone (for perf). The system comes from the tests'
+// builder, tests/support/moving_sheet_system.{h,cpp}, compiled alongside. Built by hand from the
+// top of the worktree after building the core library:
+//   g++ -O3 -DNDEBUG -std=c++20 -fopenmp -DEIGEN_DONT_PARALLELIZE -DWEFT_SOURCE_DIR=\"$PWD\" -Icore -Itests \
 //     -isystem /usr/include/eigen3 -I/usr/include/suitesparse docs/bench/amg-profile/amg_profile.cpp \
+//     tests/support/moving_sheet_system.cpp \
 //     build/core/libweft_core.a -lcholmod -ltinyobjloader -lgmpxx -lgmp $(pkg-config --libs stb) -o amg_profile
 #include <algorithm>
 #include <ctime>
@@ -22,6 +24,7 @@
 #include "scene/scene_json.h"
 #include "sim/cloth.h"
 #include "sim/world.h"
+#include "support/moving_sheet_system.h"
 
 using namespace weft;
 
@@ -32,46 +35,8 @@ static double now() {
   return 1e3 * t.tv_sec + 1e-6 * t.tv_nsec;
 }
 
-struct ClothSystem {
-  SystemMatrix A;
-  Eigen::VectorXd b;
-};
-
-static ClothSystem movingSheetSystem(int resolution, int stepsBefore) {
-  const std::string file = std::string(WEFT_SOURCE_DIR) + "/presets/scenes/hanging-sheet.json";
-  const std::string size = std::to_string(resolution);
-  const Scene scene = loadScene(file, {"cloths.0.mesh.grid.resolution=[" + size + "," + size + "]"});
-  World world(scene);
-  for (int s = 0; s < stepsBefore; ++s) world.step();
-  Cloth cloth = buildCloth(scene.cloths[0], file, 0);
-  cloth.mesh = world.cloth(0);
-  const int n = cloth.mesh.vertexCount();
-  const double h = scene.solver.dt;
-  ClothSystem system;
-  const CoupledVertexPairs pairs = coupledVertexPairs(cloth);
-  system.A.setPattern(n, pairs.edges, pairs.hingeWings);
-  system.A.setZero();
-  ElasticOptions options;
-  options.hessian = HessianMode::Definite;
-  ElasticWorkspace workspace;
-  std::vector<Vec3> forces;
-  StageProfile profile;
-  evaluateElasticForces(cloth, cloth.mesh.x, options, workspace, forces, &system.A, profile);
-  system.A.matrix() *= h * h;
-  system.b.resize(3 * n);
-  for (int i = 0; i < n; ++i) {
-    const double m = cloth.mesh.mass[i];
-    system.A.addDiagonal(i, (1.0 + h * scene.forces.damping.mass) * m);
-    system.b.segment<3>(3 * i) = m * cloth.mesh.v[i] + h * (forces[i] + m * scene.forces.gravity);
-  }
-  std::vector<int> pinned;
-  std::vector<Vec3> targets;
-  pinTargets(cloth, world.time() + h, pinned, targets, profile);
-  Eigen::VectorXd known = Eigen::VectorXd::Zero(3 * n);
-  for (size_t k = 0; k < pinned.size(); ++k) known.segment<3>(3 * pinned[k]) = (targets[k] - cloth.mesh.x[pinned[k]]) / h;
-  system.A.constrainVertices(pinned, known, system.b);
-  return system;
-}
+using test::ClothSystem;
+using test::movingSheetSystem;
 
 template <class F>
 static double median(int repeats, F&& f) {
