@@ -158,28 +158,53 @@ double separationBoundNear(const StressFan& fan, const LineSides& sides, double 
   return (fan.closed ? 0.5 : 1.0) * bound * (1.0 + 1e-9) + 1e-12 * drift;
 }
 
-double separationStrengthBound(const StressFan& fan) {
+namespace {
+
+// separationStrengthBound over `count` sectors, sector k read through stressOf(k), largestOf(k)
+// (its spectral norm) and spanOf(k): one body for a built fan and for a closed fan's triangles,
+// so both give the same bound to the last bit.
+template <typename StressOf, typename LargestOf, typename SpanOf>
+double fanStrengthBound(std::size_t count, const StressOf& stressOf, const LargestOf& largestOf, const SpanOf& spanOf,
+                        bool closed, double openSpan) {
   // sigma+ is positive semi-definite: its spectral norm is its largest principal stress.
   double weighted = 0.0, totalSpan = 0.0;
   Mat2 mean = Mat2::Zero();
-  for (const FanSector& sector : fan.sectors) {
-    weighted += spectralNorm(sector.stress) * sector.span;
-    mean += sector.stress * sector.span;
-    totalSpan += sector.span;
+  for (std::size_t k = 0; k < count; ++k) {
+    weighted += largestOf(k) * spanOf(k);
+    mean += stressOf(k) * spanOf(k);
+    totalSpan += spanOf(k);
   }
   if (!(totalSpan > 0.0)) return 0.0;
   mean /= totalSpan;
   double deviation = 0.0;  // D
-  for (const FanSector& sector : fan.sectors) deviation += spectralNorm(sector.stress - mean) * sector.span;
+  for (std::size_t k = 0; k < count; ++k) deviation += spectralNorm(stressOf(k) - mean) * spanOf(k);
   // First bound: |q1| + |q2| <= weighted; zeta <= min(|q1|, |q2|) <= weighted / 2, halved again
   // at an interior vertex.
-  const double byArcs = (fan.closed ? 0.25 : 0.5) * weighted;
+  const double byArcs = (closed ? 0.25 : 0.5) * weighted;
   // Second bound: min(|q1|, |q2|) <= |S| max chord + D / 2. A closed fan's sides are half circles
   // (chord 2, then zeta is halved); an open fan of angle F split anywhere has a side whose chord
   // is at most 2 sin(F / 4).
-  const double byMean = fan.closed ? spectralNorm(mean) + 0.25 * deviation
-                                   : 2.0 * std::sin(0.25 * fan.openSpan) * spectralNorm(mean) + 0.5 * deviation;
+  const double byMean = closed ? spectralNorm(mean) + 0.25 * deviation
+                               : 2.0 * std::sin(0.25 * openSpan) * spectralNorm(mean) + 0.5 * deviation;
   return std::min(byArcs, byMean);
+}
+
+}  // namespace
+
+double separationStrengthBound(const StressFan& fan) {
+  const auto& sectors = fan.sectors;
+  return fanStrengthBound(
+      sectors.size(), [&](std::size_t k) -> const Mat2& { return sectors[k].stress; },
+      [&](std::size_t k) { return spectralNorm(sectors[k].stress); }, [&](std::size_t k) { return sectors[k].span; },
+      fan.closed, fan.openSpan);
+}
+
+double closedFanStrengthBound(std::span<const int> triangles, std::span<const double> spans,
+                              const std::vector<Mat2>& stress, const std::vector<double>& largestPrincipal) {
+  return fanStrengthBound(
+      triangles.size(), [&](std::size_t k) -> const Mat2& { return stress[triangles[k]]; },
+      [&](std::size_t k) { return largestPrincipal[triangles[k]]; }, [&](std::size_t k) { return spans[k]; }, true,
+      0.0);
 }
 
 namespace {

@@ -79,6 +79,13 @@ double spectralNorm(const Mat2& s);
 // whose bound is below the weakest required strength cannot tear in any direction.
 double separationStrengthBound(const StressFan& fan);
 
+// The same bound for a closed fan given by its triangles alone (their stresses, the largest
+// principal stress of each, and the vertex's corner angle in each, in the fan's order), without
+// building the fan: the search screens every loaded interior vertex with it at the start of a
+// step. Equal to separationStrengthBound of the fan stressFan builds from the same triangles.
+double closedFanStrengthBound(std::span<const int> triangles, std::span<const double> spans,
+                              const std::vector<Mat2>& stress, const std::vector<double>& largestPrincipal);
+
 // The forces the two sides of a line (or ray) at `angle` exert on the vertex (q1, q2 above).
 struct LineSides {
   Vec2 q1 = Vec2::Zero();

@@ -74,6 +74,28 @@ void TearSearch::start(const ClothMesh& mesh, const std::vector<TriangleCorners>
   weftAngleRad_ = weftAngleRad;
   settings_ = settings;
   const int n = mesh.vertexCount();
+  if (!rowsValid_ || rowsVertices_ != mesh.x.size() || rowsTriangles_ != mesh.tris.size()) buildRows(mesh, corners);
+  walked_.assign(n, 0);
+  bound_.assign(n, 0.0);
+  best_.assign(n, TearCandidate{});
+  excluded_.assign(n, 0);
+  held_.assign(n, 0);
+  sharpened_.assign(n, 0);
+  gated_ = false;
+  mature_.clear();
+  newlyOverloaded_.clear();
+  place_.assign(n, CrackPlace::None);
+  version_.assign(n, 0);
+  crackVertices_.clear();
+  crackCellsStale_ = true;
+  waiting_.clear();
+  evaluatedHeap_.clear();
+  unboundedHeap_.clear();
+  screenAndLookAtAll(mesh, corners, stress, counts);
+}
+
+void TearSearch::buildRows(const ClothMesh& mesh, const std::vector<TriangleCorners>& corners) {
+  const int n = mesh.vertexCount();
   triangleAt_.assign(n, kNone);
   rowStart_.assign(n + 1, 0);
   for (int t = 0; t < mesh.triangleCount(); ++t) {
@@ -93,22 +115,13 @@ void TearSearch::start(const ClothMesh& mesh, const std::vector<TriangleCorners>
       around_[fill[v]++] = t;
     }
   }
-  walked_.assign(n, 0);
-  bound_.assign(n, 0.0);
-  best_.assign(n, TearCandidate{});
-  excluded_.assign(n, 0);
-  held_.assign(n, 0);
-  sharpened_.assign(n, 0);
-  gated_ = false;
-  mature_.clear();
-  newlyOverloaded_.clear();
-  place_.assign(n, CrackPlace::None);
-  version_.assign(n, 0);
-  crackVertices_.clear();
-  waiting_.clear();
-  evaluatedHeap_.clear();
-  unboundedHeap_.clear();
-  screenAndLookAtAll(mesh, corners, stress, counts);
+  onBorder_.assign(n, 0);
+  for (const Edge& edge : mesh.edges) {
+    if (edge.isBoundary()) onBorder_[edge.v[0]] = onBorder_[edge.v[1]] = 1;
+  }
+  rowsValid_ = true;
+  rowsVertices_ = mesh.x.size();
+  rowsTriangles_ = mesh.tris.size();
 }
 
 void TearSearch::screenAndLookAtAll(const ClothMesh& mesh, const std::vector<TriangleCorners>& corners,
@@ -122,20 +135,31 @@ void TearSearch::screenAndLookAtAll(const ClothMesh& mesh, const std::vector<Tri
   // below 1 too.
   largestStress_.resize(stress.size());
   for (std::size_t t = 0; t < stress.size(); ++t) largestStress_[t] = spectralNorm(stress[t]);
-  onBorder_.assign(n, 0);
-  for (const Edge& edge : mesh.edges) {
-    if (edge.isBoundary()) onBorder_[edge.v[0]] = onBorder_[edge.v[1]] = 1;
-  }
   const double screen = (1.0 + 1e-9) / weakestStrength(*table_);
   for (int v = 0; v < n; ++v) {
     if (settings_.skipByBound && !onBorder_[v] && rowStart_[v] < rowStart_[v + 1]) {
       double weighted = 0.0;
       for (int i = rowStart_[v]; i < rowStart_[v + 1]; ++i) weighted += largestStress_[around_[i]] * aroundSpan_[i];
-      if (0.25 * weighted * screen < lowestMultiplierAt(mesh, v)) {
-        ++counts.vertices;
+      const double lowest = lowestMultiplierAt(mesh, v);
+      ++counts.vertices;
+      if (0.25 * weighted * screen < lowest) {
         ++counts.skipped;
         continue;
       }
+      // Not settled by its arcs: its whole bound, as lookAt would find it (a closed fan, so no
+      // crack place and no propagation factor), from the rows without building the fan.
+      const std::span<const int> triangles(around_.data() + rowStart_[v], around_.data() + rowStart_[v + 1]);
+      const std::span<const double> spans(aroundSpan_.data() + rowStart_[v], aroundSpan_.data() + rowStart_[v + 1]);
+      ++version_[v];
+      sharpened_[v] = 0;
+      bound_[v] = closedFanStrengthBound(triangles, spans, stress, largestStress_) * (1.0 + 1e-9) /
+                  (1.0 * lowest * weakestStrength(*table_));
+      if (bound_[v] < 1.0) {
+        ++counts.skipped;
+      } else {
+        pushEntry(waiting_, Entry{bound_[v], v, version_[v]});
+      }
+      continue;
     }
     lookAt(mesh, corners, stress, v, counts);
   }
@@ -144,6 +168,8 @@ void TearSearch::screenAndLookAtAll(const ClothMesh& mesh, const std::vector<Tri
 void TearSearch::refresh(const ClothMesh& mesh, const std::vector<TriangleCorners>& corners,
                          const std::vector<Mat2>& stress, const std::vector<int>& triangles,
                          const std::vector<int>& extraVertices, TearSearchCounts& counts) {
+  rowsValid_ = false;  // the tear changed the mesh: the next start builds the rows anew
+  crackCellsStale_ = true;
   const std::size_t n = static_cast<std::size_t>(mesh.vertexCount());
   triangleAt_.resize(n, kNone);
   bound_.resize(n, 0.0);
@@ -226,6 +252,7 @@ void TearSearch::boundAt(const ClothMesh& mesh, const std::vector<TriangleCorner
   if (!holds(mesh, triangleAt_[vertex], vertex)) {
     // A separated vertex's triangle may have gone to its copy: find one it still holds.
     triangleAt_[vertex] = findTriangleAt(mesh, vertex);
+    crackCellsStale_ = true;  // nearCrack's index reads triangleAt_
     if (triangleAt_[vertex] == kNone) return;
   }
   ++counts.vertices;
@@ -341,7 +368,10 @@ TearCandidate TearSearch::bestLineOf(const ClothMesh& mesh, const std::vector<Ma
 TearCandidate TearSearch::tipLineAt(const ClothMesh& mesh, const std::vector<TriangleCorners>& corners,
                                     const std::vector<Mat2>& stress, int vertex, TearSearchCounts& counts) {
   if (vertex < 0 || vertex >= static_cast<int>(excluded_.size()) || excluded_[vertex]) return TearCandidate{};
-  if (!holds(mesh, triangleAt_[vertex], vertex)) triangleAt_[vertex] = findTriangleAt(mesh, vertex);
+  if (!holds(mesh, triangleAt_[vertex], vertex)) {
+    triangleAt_[vertex] = findTriangleAt(mesh, vertex);
+    crackCellsStale_ = true;  // nearCrack's index reads triangleAt_
+  }
   if (triangleAt_[vertex] == kNone) return TearCandidate{};
   const CrackPlace place = fanOf(mesh, corners, stress, vertex, fan_);
   if (place != CrackPlace::Tip) return TearCandidate{};
@@ -359,11 +389,42 @@ double TearSearch::lowestMultiplierAt(const ClothMesh& mesh, int vertex) const {
   return scaleAt(mesh, vertex, 1.0, false).lowest();  // the lowest does not depend on `ray`
 }
 
-bool TearSearch::nearCrack(const ClothMesh& mesh, const Vec2& restPosition, double radius) const {
-  for (int v : crackVertices_) {
-    if (place_[v] == CrackPlace::None || !holds(mesh, triangleAt_[v], v)) continue;
+std::int64_t TearSearch::crackCellOf(const Vec2& restPosition) const {
+  const auto cell = [&](double c) { return static_cast<std::int64_t>(std::floor(c / crackCellSize_)); };
+  return (cell(restPosition.x()) << 32) ^ (cell(restPosition.y()) & 0xffffffff);
+}
+
+bool TearSearch::nearCrack(const ClothMesh& mesh, const Vec2& restPosition, double radius) {
+  if (!(radius > 0.0) || !std::isfinite(restPosition.x()) || !std::isfinite(restPosition.y())) return false;
+  auto restOf = [&](int v) {
     const Triangle& t = mesh.tris[triangleAt_[v]];
-    if ((t.rest[cornerOf(t, v)] - restPosition).norm() < radius) return true;
+    return t.rest[cornerOf(t, v)];
+  };
+  if (crackCellsStale_ || radius != crackCellSize_) {
+    crackCells_.clear();
+    crackCellSize_ = radius;
+    crackIndexed_ = 0;
+    crackCellsStale_ = false;
+  }
+  for (; crackIndexed_ < crackVertices_.size(); ++crackIndexed_) {
+    const int v = crackVertices_[crackIndexed_];
+    // A vertex that holds no triangle now is skipped by the query anyway; one that does is
+    // indexed where it lies now (a later tear rebuilds the index).
+    if (!holds(mesh, triangleAt_[v], v)) continue;
+    crackCells_[crackCellOf(restOf(v))].push_back(v);
+  }
+  // Every crack vertex within `radius` lies in the query's cell or one of its eight neighbours.
+  const auto cell = [&](double c) { return static_cast<std::int64_t>(std::floor(c / crackCellSize_)); };
+  const std::int64_t cx = cell(restPosition.x()), cy = cell(restPosition.y());
+  for (std::int64_t dx = -1; dx <= 1; ++dx) {
+    for (std::int64_t dy = -1; dy <= 1; ++dy) {
+      const auto found = crackCells_.find(((cx + dx) << 32) ^ ((cy + dy) & 0xffffffff));
+      if (found == crackCells_.end()) continue;
+      for (int v : found->second) {
+        if (place_[v] == CrackPlace::None || !holds(mesh, triangleAt_[v], v)) continue;
+        if ((restOf(v) - restPosition).norm() < radius) return true;
+      }
+    }
   }
   return false;
 }

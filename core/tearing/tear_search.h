@@ -15,7 +15,9 @@
 // its lips still carry the stress the crack released until the cloth has moved: read as a fresh
 // load, it would start cracks beside and across the first one at every step (measured: a uniaxial
 // pull then shreds the sheet into strips one element wide).
+#include <cstdint>
 #include <optional>
+#include <unordered_map>
 #include <vector>
 
 #include "mesh/cloth_mesh.h"
@@ -38,9 +40,13 @@ class TearSearch {
   void setStrengthMap(const TearStrengthMap* map) { map_ = map; }
   // The cloth's tear region (tear_region.h), or none; read as the map is.
   void setTearRegion(const TearRegion* region) { region_ = region; }
-  // Every vertex looked at afresh (the start of a step).
+  // Every vertex looked at afresh (the start of a step). The triangles around each vertex are
+  // kept from the last start when nothing has changed the mesh since: no refresh (no tear) and
+  // the same vertex and triangle counts. A caller that searches another mesh with the same object
+  // calls forgetMesh first.
   void start(const ClothMesh& mesh, const std::vector<TriangleCorners>& corners, const std::vector<Mat2>& stress,
              const TearTable& table, double weftAngleRad, const TearSearchSettings& settings, TearSearchCounts& counts);
+  void forgetMesh() { rowsValid_ = false; }
   // The vertices of these triangles (changed by a tear, or with a new stress), and `vertices`
   // (those whose fans a tear opened without changing a triangle), looked at again; new vertices
   // are added. `corners` and `stress` must already be up to date for them.
@@ -57,7 +63,7 @@ class TearSearch {
                           const std::vector<Mat2>& stress, int vertex, TearSearchCounts& counts);
   // Whether a vertex of a crack (its tip or a lip) lies within `radius` (material space) of
   // `restPosition`.
-  bool nearCrack(const ClothMesh& mesh, const Vec2& restPosition, double radius) const;
+  bool nearCrack(const ClothMesh& mesh, const Vec2& restPosition, double radius);
   // The vertex is not offered again this step (every line at it was refused, or its crack has
   // run as far as it may this step).
   void exclude(int vertex);
@@ -122,6 +128,15 @@ class TearSearch {
   std::vector<char> sharpened_;          // per vertex: bound_ is already the piecewise bound
   std::vector<CrackPlace> place_;        // per vertex, as last looked at
   std::vector<int> crackVertices_;       // every vertex once seen on a crack (place_ says if it still is)
+  // nearCrack's index of crackVertices_ by rest-space cell (squares of side crackCellSize_): a
+  // query reads the 3 x 3 cells around it, not every crack vertex. The first crackIndexed_ of
+  // crackVertices_ are in it; a tear (which may move a vertex's rest position) or a new radius
+  // rebuilds it.
+  std::unordered_map<std::int64_t, std::vector<int>> crackCells_;
+  double crackCellSize_ = 0.0;
+  std::size_t crackIndexed_ = 0;
+  bool crackCellsStale_ = true;
+  std::int64_t crackCellOf(const Vec2& restPosition) const;
   // Per vertex: bumped whenever it is looked at again, so heap entries from before are stale.
   std::vector<unsigned> version_;
   struct Entry {
@@ -137,6 +152,12 @@ class TearSearch {
   StressFan fan_;                        // reused
   std::vector<double> largestStress_;    // per triangle, this step's screen (reused)
   std::vector<char> onBorder_;           // per vertex, at the start of the step
+  // Whether rowStart_, around_, aroundSpan_, triangleAt_ and onBorder_ still describe the mesh
+  // (for that many vertices and triangles): the mesh changes only through tears, which refresh.
+  bool rowsValid_ = false;
+  std::size_t rowsVertices_ = 0, rowsTriangles_ = 0;
+  // The rows above, from the mesh.
+  void buildRows(const ClothMesh& mesh, const std::vector<TriangleCorners>& corners);
 };
 
 }  // namespace weft

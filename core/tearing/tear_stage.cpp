@@ -177,6 +177,8 @@ TopologyChange TearStage::tearCloth(Cloth& cloth, int clothIndex, const Membrane
     StageTimer timer(profile, "tear_search");
     search_.setStrengthMap(cloth.tearStrengthMap ? &*cloth.tearStrengthMap : nullptr);
     search_.setTearRegion(cloth.tearRegion ? &*cloth.tearRegion : nullptr);
+    if (clothIndex != searchedCloth_) search_.forgetMesh();
+    searchedCloth_ = clothIndex;
     search_.start(cloth.mesh, corners, stress_, table, cloth.weftAngleRad, searchSettings_, stats_.search);
     if (spec_.incubation > 0.0 && !incubated(Incubating{time - dt, 0.0}, time, dt)) {
       // Only vertices that have waited long enough are offered as crack starts; the others are

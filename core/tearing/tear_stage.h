@@ -87,6 +87,7 @@ class TearStage {
   std::vector<NonlocalStress> nonlocal_;  // per cloth: its neighbourhoods are its mesh's, patched after each tear
   std::vector<std::vector<TriangleCorners>> corners_;  // per cloth, patched after each tear
   TearSearch search_;
+  int searchedCloth_ = -1;  // the cloth search_ last searched: its rows are kept for that cloth only
   // A vertex whose omega is above 1, waiting out the incubation before it may start a crack.
   struct Incubating {
     double since = 0.0;  // when its omega went above 1 (s); kept while it stays above 1
