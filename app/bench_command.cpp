@@ -131,11 +131,12 @@ std::vector<std::string> overridesFor(const Configuration& config, const BenchOp
       "solver.integrator=" + sceneIntegratorName(config.integrator),
       "solver.threads=" + std::to_string(options.threads),
   };
-  // "amg" is the CG with the multigrid preconditioner; "cg" keeps the scene's (the default lagged
-  // Cholesky).
-  if (config.solver == "amg") {
+  // "amg" is the CG with the multigrid preconditioner; "cg" is the CG with the lagged
+  // Cholesky, named explicitly so that it does not follow the default.
+  if (config.solver == "amg" || config.solver == "cg") {
     overrides.push_back("solver.linear_solver.type=cg");
-    overrides.push_back("solver.linear_solver.preconditioner=amg");
+    overrides.push_back(config.solver == "amg" ? "solver.linear_solver.preconditioner=amg"
+                                               : "solver.linear_solver.preconditioner=lagged_cholesky");
   } else if (config.solver != "none") {
     overrides.push_back("solver.linear_solver.type=" + config.solver);
   }

@@ -24,9 +24,11 @@ std::vector<std::string> overridesFor(int size, const std::string& solver, int t
   std::vector<std::string> overrides{
       "cloths.0.mesh.grid.resolution=[" + std::to_string(size) + "," + std::to_string(size) + "]",
       "solver.threads=" + std::to_string(threads)};
-  if (solver == "amg") {
+  // "cg" is the CG with the lagged Cholesky, named explicitly so that it does not follow the default.
+  if (solver == "amg" || solver == "cg") {
     overrides.push_back("solver.linear_solver.type=cg");
-    overrides.push_back("solver.linear_solver.preconditioner=amg");
+    overrides.push_back(solver == "amg" ? "solver.linear_solver.preconditioner=amg"
+                                        : "solver.linear_solver.preconditioner=lagged_cholesky");
   } else {
     overrides.push_back("solver.linear_solver.type=" + solver);
   }

@@ -225,6 +225,22 @@ TEST(AmgPreconditioner, DegenerateHierarchiesStillSolve) {
   EXPECT_LE(exact.iterations, 12);  // the factor is of the strong couplings only (the hinges' wings dropped)
 }
 
+TEST(AmgPreconditioner, AMassDominatedSystemIsSmoothedNotFactoredDensely) {
+  // The 20² sheet's system as a very short step makes it (the mass far above the stiffness): no
+  // coupling is strong, nothing coarsens, and the 400-vertex finest level, small enough for the
+  // dense solve, is left to the sweeps, which still solve it in a few iterations.
+  ClothSystem system = movingSheetSystem(20, 5);
+  for (int i = 0; i < system.A.vertexCount(); ++i) system.A.addDiagonal(i, 1e3);
+  PreconditionedConjugateGradient cg(1e-10, 200);
+  AmgPreconditioner amg;
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(system.b.size());
+  const LinearSolveResult result = cg.solve(system.A, system.b, 0.0, amg, x);
+  EXPECT_EQ(amg.hierarchy().levelCount(), 1);
+  EXPECT_FALSE(amg.hierarchy().coarsestFactored());
+  EXPECT_TRUE(result.converged);
+  EXPECT_LE(result.iterations, 10);
+}
+
 std::uint64_t runHash(Scene scene, int threads, int steps) {
   scene.solver.threads = threads;
   World world(scene);
