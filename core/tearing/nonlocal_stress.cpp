@@ -276,9 +276,28 @@ std::vector<int> NonlocalStress::patch(const ClothMesh& mesh, const std::vector<
   // Triangles the tear added are changed ones too, whether or not the caller listed them.
   std::vector<int> seeds = changed;
   for (std::size_t t = cachedTriangles_; t < mesh.tris.size(); ++t) seeds.push_back(static_cast<int>(t));
+  // Where the changed triangles were before the tear (a triangle the tear added was nowhere).
+  std::vector<Vec2> seedPlaces;
+  for (int t : seeds) {
+    if (static_cast<std::size_t>(t) < cachedTriangles_) seedPlaces.push_back(centroid_[t]);
+  }
   updateCentroids(mesh, seeds);
+  for (int t : seeds) seedPlaces.push_back(centroid_[t]);
   gatherAround(mesh, seeds, kPatchReach * radius_);
-  std::vector<int> dirty = region_;
+  // A neighbourhood is the walk from its triangle through triangles whose centroids lie within the
+  // radius, weighted by those centroids and their areas: it can change only if a changed triangle
+  // lies (or lay) within the radius of its triangle, and its average only then too. The walk above
+  // reaches further (round crack ends); the triangles it found beyond that keep their lists and
+  // averages, bit for bit what a rebuild would give.
+  std::vector<int> dirty;
+  const double radius2 = radius_ * radius_;
+  for (int t : region_) {
+    const Vec2 centre = centroid_[t];
+    if (std::any_of(seedPlaces.begin(), seedPlaces.end(),
+                    [&](const Vec2& place) { return (place - centre).squaredNorm() <= radius2; })) {
+      dirty.push_back(t);
+    }
+  }
   std::sort(dirty.begin(), dirty.end());
   // The changed triangles' stresses (and new ones) into the packed copy the averages read.
   packed_.resize(local.size());
