@@ -16,8 +16,13 @@ void refreshMembranes(Cloth& cloth, const TopologyChange& change) {
 void refreshHinges(Cloth& cloth, const TopologyChange& change) {
   if (!bendingEnabled(cloth.material.bending)) return;  // rebuildElements builds none either
   const std::vector<int>& edges = change.changedEdges;
-  std::erase_if(cloth.hinges,
-                [&](const BendingHinge& h) { return std::binary_search(edges.begin(), edges.end(), h.edge); });
+  // A flag per edge, not a search of the list per hinge: this pass runs once per tear over every
+  // hinge of the cloth, and the search was most of a tear's bookkeeping.
+  std::vector<char> changed(cloth.mesh.edges.size(), 0);
+  for (int e : edges) changed[e] = 1;
+  std::erase_if(cloth.hinges, [&](const BendingHinge& h) {
+    return h.edge >= 0 && h.edge < static_cast<int>(changed.size()) && changed[h.edge];
+  });
   for (int e : edges) {
     if (std::optional<BendingHinge> hinge = makeBendingHinge(cloth.mesh, e, cloth.weftAngleRad)) {
       cloth.hinges.push_back(*hinge);
