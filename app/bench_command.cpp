@@ -378,6 +378,9 @@ Command addBenchCommand(CLI::App& app) {
       ->delimiter(',')
       ->check(CLI::IsMember({"thesis", "thesis-unbounded", "dense", "dense-unbounded", "propagate", "growth"}));
   cli->add_option("--tearing-csv", options->tearingOptions.csv, "Tearing benchmark: CSV output file")->capture_default_str();
+  cli->add_option("--tearing-steps-csv", options->tearingOptions.stepsCsv,
+                  "Tearing benchmark: also write every timed step's figures (tears, stage and whole ms, the stage's "
+                  "parts, lines evaluated) to this CSV");
   cli->add_flag("--solver-accuracy", options->solverAccuracy,
                 "Instead of timing, run the scene for --solver-accuracy-duration seconds at each of --sizes with "
                 "each of --solvers and report the largest vertex distance to the first solver's run and the CG "

@@ -52,8 +52,9 @@ struct TearingBenchRow {
 constexpr double kGrowthStressLength = 0.065;  // m
 constexpr double kGrowthIncubation = 0.06;     // s
 
-TearingBenchRow measure(const TearingBenchOptions& options, const std::string& lines, bool bound, bool propagate,
-                        bool growthMode) {
+// One CSV line per timed step (TearingBenchOptions::stepsCsv), appended to `steps`.
+TearingBenchRow measure(const TearingBenchOptions& options, const std::string& name, const std::string& lines,
+                        bool bound, bool propagate, bool growthMode, std::ostringstream& steps) {
   const fs::path scene = fs::path(WEFT_SOURCE_DIR) / "presets" / "scenes" / "sheet-pulled-apart.json";
   const int n = options.resolution;
   std::vector<std::string> overrides{
@@ -88,6 +89,7 @@ TearingBenchRow measure(const TearingBenchOptions& options, const std::string& l
       double partBefore[4];
       for (int k = 0; k < 4; ++k) partBefore[k] = world.profile().totalWithPrefix(parts[k]);
       const long long tearsBefore = world.tearStats().tears;
+      const long long linesBefore = world.tearStats().search.linesEvaluated;
       world.step();
       if (world.tearStats().tears > tearsBefore) {
         tearingStepTearingSamples.push_back(world.profile().totalWithPrefix("tear_") - tearingBefore);
@@ -96,6 +98,10 @@ TearingBenchRow measure(const TearingBenchOptions& options, const std::string& l
       for (int k = 0; k < 4; ++k) partSamples[k].push_back(world.profile().totalWithPrefix(parts[k]) - partBefore[k]);
       tearingSamples.push_back(world.profile().totalWithPrefix("tear_") - tearingBefore);
       stepSamples.push_back(world.profile().total() - totalBefore);
+      steps << name << "," << repeat << "," << s << "," << world.tearStats().tears - tearsBefore << ","
+            << tearingSamples.back() << "," << stepSamples.back();
+      for (int k = 0; k < 4; ++k) steps << "," << partSamples[k].back();
+      steps << "," << world.tearStats().search.linesEvaluated - linesBefore << "\n";
     }
     const TearStats& after = world.tearStats();
     tears += after.tears - before.tears;
@@ -127,6 +133,7 @@ TearingBenchRow measure(const TearingBenchOptions& options, const std::string& l
 
 int runTearingBench(const TearingBenchOptions& options) {
   std::vector<TearingBenchRow> rows;
+  std::ostringstream steps;
   try {
     std::printf("%-7s %-6s %-9s %8s %16s %14s %8s %10s %12s %12s   %-30s   %-40s   %s\n", "lines", "bound", "propagate", "vertices",
                 "tearing ms/step", "whole ms/step", "share", "tears", "skipped", "lines/step",
@@ -144,7 +151,7 @@ int runTearingBench(const TearingBenchOptions& options) {
         continue;
       }
       {
-        const TearingBenchRow r = measure(options, c.lines, c.bound, c.propagate, c.growthMode);
+        const TearingBenchRow r = measure(options, c.name, c.lines, c.bound, c.propagate, c.growthMode, steps);
         char parts[64], tearingSteps[64];
         std::snprintf(parts, sizeof parts, "%.2f/%.2f/%.2f/%.2f", r.medianStressMs, r.medianSearchMs, r.medianSurgeryMs,
                       r.medianRelaxMs);
@@ -179,7 +186,16 @@ int runTearingBench(const TearingBenchOptions& options) {
         << r.medianSurgeryMs << "," << r.medianRelaxMs << "," << r.tearingSteps << "," << r.medianTearingStepTearingMs
         << "," << r.medianTearingStepMs << "," << r.windowShare << "\n";
   }
-  return writeBenchCsv(options.csv, csv.str()) ? kExitOk : kExitFailure;
+  if (!writeBenchCsv(options.csv, csv.str())) return kExitFailure;
+  if (!options.stepsCsv.empty()) {
+    std::ostringstream stepsText;
+    stepsText << benchCsvMachineLine("weft bench --tearing (per timed step)", options.threads,
+                                     "sheet-pulled-apart, " + std::to_string(options.resolution) + "^2");
+    stepsText << "row,repeat,step,tears,tearing_ms,step_ms,stress_ms,search_ms,surgery_ms,relax_ms,lines_evaluated\n"
+              << steps.str();
+    if (!writeBenchCsv(options.stepsCsv, stepsText.str())) return kExitFailure;
+  }
+  return kExitOk;
 }
 
 }  // namespace weft::app

@@ -18,6 +18,10 @@ struct TearingBenchOptions {
   // growth); empty: all of them.
   std::vector<std::string> rows;
   std::string csv = "out/bench/tearing.csv";
+  // Where each timed step's own figures go (row, repeat, step, tears, stage and whole ms, the four
+  // parts, lines evaluated); empty: not written. The medians hide where the stage's time goes: the
+  // steps of an overload wave and those that tear cost several times a quiet step.
+  std::string stepsCsv;
 };
 
 int runTearingBench(const TearingBenchOptions& options);
