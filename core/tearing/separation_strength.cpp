@@ -118,8 +118,10 @@ FanSector makeSector(double start, double span, const Mat2& stress) {
   return sector;
 }
 
-LineSides lineSides(const StressFan& fan, double angle) {
-  const Vec2 gLine = gAt(angle);
+namespace {
+
+// lineSides with g(angle) given.
+LineSides lineSidesWith(const StressFan& fan, double angle, const Vec2& gLine) {
   if (fan.closed) {
     // Side 1 lies counter-clockwise of the line's direction, side 2 clockwise (Figure 2.9);
     // g(angle + pi) = -g(angle).
@@ -132,6 +134,10 @@ LineSides lineSides(const StressFan& fan, double angle) {
   return {arcForce(fan, fan.openStart, before, gStart, gLine),
           arcForce(fan, fan.openStart + before, fan.openSpan - before, gLine, gEnd)};
 }
+
+}  // namespace
+
+LineSides lineSides(const StressFan& fan, double angle) { return lineSidesWith(fan, angle, gAt(angle)); }
 
 double separationFromSides(const StressFan& fan, const LineSides& sides) {
   return (fan.closed ? 0.5 : 1.0) * balancedPull(sides.q1, sides.q2);
@@ -229,7 +235,8 @@ int sectorAt(const StressFan& fan, double angle) {
 
 LinePieceBound separationOverPiece(const StressFan& fan, double middle, double halfWidth) {
   LinePieceBound piece;
-  const LineSides sides = lineSides(fan, middle);
+  const Vec2 g = gAt(middle);
+  const LineSides sides = lineSidesWith(fan, middle, g);
   piece.zeta = separationFromSides(fan, sides);
   piece.bound = separationBoundNear(fan, sides, sideForceRate(fan) * halfWidth);
   piece.edge = std::numeric_limits<double>::quiet_NaN();
@@ -249,8 +256,7 @@ LinePieceBound separationOverPiece(const StressFan& fan, double middle, double h
   const int at = sectorAt(fan, middle);
   const int across = fan.closed ? sectorAt(fan, middle + std::numbers::pi) : at;
   if (at < 0 || across < 0) return piece;
-  const Vec2 r(std::cos(middle), std::sin(middle));
-  const Vec2 g(r.y(), -r.x());
+  const Vec2 r(-g.y(), g.x());  // (cos, sin) of the middle, from g = (sin, -cos): the same bits
   const double sinHalf = std::sin(halfWidth), cosHalf = std::cos(halfWidth);
   // q1' = -(sigma(theta) + sigma(theta + pi)) r(theta) for a line, and q2 = total - q1 turns the
   // other way; for a ray q1' = sigma(theta) r(theta), q2' = -q1'.

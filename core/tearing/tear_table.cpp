@@ -19,8 +19,13 @@ double requiredStrength(const TearTable& table, double alphaDeg) {
   const int n = static_cast<int>(table.strength.size());
   // Thesis §3.1: interpolate between the measured directions; 135 deg interpolates towards
   // 180 deg, which is 0 deg again (a line has no sense).
-  double a = std::fmod(alphaDeg, 180.0);
-  if (a < 0.0) a += 180.0;
+  // fmod returns an argument already within a half turn unchanged, bit for bit; it is skipped
+  // there (most calls, one a candidate line).
+  double a = alphaDeg;
+  if (!(a >= 0.0 && a < 180.0)) {
+    a = std::fmod(a, 180.0);
+    if (a < 0.0) a += 180.0;
+  }
   const double position = a * n / 180.0;
   const int below = std::min(static_cast<int>(position), n - 1);
   const double f = position - below;
@@ -134,7 +139,8 @@ double angleFromWarpDeg(double angle, double weftAngleRad) {
   // Eq. 3.1-3.2 take the signed angle from the line's direction C to V = U turned by +90 degrees:
   // det(C, V) = cos(theta - w) and C . V = sin(theta - w), so alpha = w + 90 degrees - theta, which
   // Eq. 3.3 brings into [0, 180). In closed form: no trigonometry per line (the search's inner loop).
-  double alpha = std::fmod((weftAngleRad - angle) * (180.0 / std::numbers::pi) + 90.0, 180.0);
+  double alpha = (weftAngleRad - angle) * (180.0 / std::numbers::pi) + 90.0;
+  if (!(alpha > -180.0 && alpha < 180.0)) alpha = std::fmod(alpha, 180.0);  // fmod leaves these as they are
   if (alpha < 0.0) alpha += 180.0;
   // A line at exactly 0 may round to just below 180, which is the same line: report 0.
   return alpha < 180.0 - 1e-9 ? alpha : 0.0;
