@@ -152,8 +152,7 @@ void TearSearch::screenAndLookAtAll(const ClothMesh& mesh, const std::vector<Tri
       const std::span<const double> spans(aroundSpan_.data() + rowStart_[v], aroundSpan_.data() + rowStart_[v + 1]);
       ++version_[v];
       sharpened_[v] = 0;
-      bound_[v] = closedFanStrengthBound(triangles, spans, stress, largestStress_) * (1.0 + 1e-9) /
-                  (1.0 * lowest * weakestStrength(*table_));
+      bound_[v] = omegaCeiling(closedFanStrengthBound(triangles, spans, stress, largestStress_), 1.0, lowest);
       if (bound_[v] < 1.0) {
         ++counts.skipped;
       } else {
@@ -266,11 +265,8 @@ void TearSearch::boundAt(const ClothMesh& mesh, const std::vector<TriangleCorner
     return;
   }
   const double scale = place == CrackPlace::Tip ? table_->propagationFactor : 1.0;
-  // The margin covers the rounding of the bound itself, so the skip never changes a result.
-  bound_[vertex] = settings_.skipByBound
-                       ? separationStrengthBound(fan_) * (1.0 + 1e-9) /
-                             (scale * lowestMultiplierAt(mesh, vertex) * weakestStrength(*table_))
-                       : std::numeric_limits<double>::infinity();
+  bound_[vertex] = settings_.skipByBound ? omegaCeiling(separationStrengthBound(fan_), scale, lowestMultiplierAt(mesh, vertex))
+                                         : std::numeric_limits<double>::infinity();
   if (bound_[vertex] < 1.0) ++counts.skipped;
 }
 
@@ -389,9 +385,15 @@ double TearSearch::lowestMultiplierAt(const ClothMesh& mesh, int vertex) const {
   return scaleAt(mesh, vertex, 1.0, false).lowest();  // the lowest does not depend on `ray`
 }
 
-std::int64_t TearSearch::crackCellOf(const Vec2& restPosition) const {
-  const auto cell = [&](double c) { return static_cast<std::int64_t>(std::floor(c / crackCellSize_)); };
-  return (cell(restPosition.x()) << 32) ^ (cell(restPosition.y()) & 0xffffffff);
+double TearSearch::omegaCeiling(double zetaBound, double scale, double lowestMultiplier) const {
+  // The margin covers the rounding of the bound itself, so the skip never changes a result.
+  return zetaBound * (1.0 + 1e-9) / (scale * lowestMultiplier * weakestStrength(*table_));
+}
+
+std::int64_t TearSearch::crackCellKey(std::int64_t cx, std::int64_t cy) { return (cx << 32) ^ (cy & 0xffffffff); }
+
+std::int64_t TearSearch::crackCellCoordinate(double c) const {
+  return static_cast<std::int64_t>(std::floor(c / crackCellSize_));
 }
 
 bool TearSearch::nearCrack(const ClothMesh& mesh, const Vec2& restPosition, double radius) {
@@ -411,14 +413,14 @@ bool TearSearch::nearCrack(const ClothMesh& mesh, const Vec2& restPosition, doub
     // A vertex that holds no triangle now is skipped by the query anyway; one that does is
     // indexed where it lies now (a later tear rebuilds the index).
     if (!holds(mesh, triangleAt_[v], v)) continue;
-    crackCells_[crackCellOf(restOf(v))].push_back(v);
+    const Vec2 rest = restOf(v);
+    crackCells_[crackCellKey(crackCellCoordinate(rest.x()), crackCellCoordinate(rest.y()))].push_back(v);
   }
   // Every crack vertex within `radius` lies in the query's cell or one of its eight neighbours.
-  const auto cell = [&](double c) { return static_cast<std::int64_t>(std::floor(c / crackCellSize_)); };
-  const std::int64_t cx = cell(restPosition.x()), cy = cell(restPosition.y());
+  const std::int64_t cx = crackCellCoordinate(restPosition.x()), cy = crackCellCoordinate(restPosition.y());
   for (std::int64_t dx = -1; dx <= 1; ++dx) {
     for (std::int64_t dy = -1; dy <= 1; ++dy) {
-      const auto found = crackCells_.find(((cx + dx) << 32) ^ ((cy + dy) & 0xffffffff));
+      const auto found = crackCells_.find(crackCellKey(cx + dx, cy + dy));
       if (found == crackCells_.end()) continue;
       for (int v : found->second) {
         if (place_[v] == CrackPlace::None || !holds(mesh, triangleAt_[v], v)) continue;

@@ -136,7 +136,11 @@ class TearSearch {
   double crackCellSize_ = 0.0;
   std::size_t crackIndexed_ = 0;
   bool crackCellsStale_ = true;
-  std::int64_t crackCellOf(const Vec2& restPosition) const;
+  std::int64_t crackCellCoordinate(double c) const;  // along one axis
+  static std::int64_t crackCellKey(std::int64_t cx, std::int64_t cy);
+  // A vertex's omega can be at most this, from a bound on its separation strength: the strength
+  // scaled by `scale` (the propagation factor at a tip) and the lowest multiplier near it.
+  double omegaCeiling(double zetaBound, double scale, double lowestMultiplier) const;
   // Per vertex: bumped whenever it is looked at again, so heap entries from before are stale.
   std::vector<unsigned> version_;
   struct Entry {

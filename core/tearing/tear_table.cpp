@@ -19,8 +19,8 @@ double requiredStrength(const TearTable& table, double alphaDeg) {
   const int n = static_cast<int>(table.strength.size());
   // Thesis §3.1: interpolate between the measured directions; 135 deg interpolates towards
   // 180 deg, which is 0 deg again (a line has no sense).
-  // fmod returns an argument already within a half turn unchanged, bit for bit; it is skipped
-  // there (most calls, one a candidate line).
+  // fmod returns an argument already within a half turn unchanged, bit for bit: it is skipped
+  // there (most calls, one per candidate line).
   double a = alphaDeg;
   if (!(a >= 0.0 && a < 180.0)) {
     a = std::fmod(a, 180.0);
