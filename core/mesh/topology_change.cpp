@@ -23,6 +23,7 @@ void append(std::vector<T>& into, const std::vector<T>& next) {
 void accumulateTopologyChange(TopologyChange& into, const TopologyChange& next) {
   mergeSorted(into.newVertices, next.newVertices);
   append(into.vertexCopies, next.vertexCopies);
+  append(into.pinnedSplits, next.pinnedSplits);
   mergeSorted(into.changedTriangles, next.changedTriangles);
   mergeSorted(into.newTriangles, next.newTriangles);
   mergeSorted(into.changedEdges, next.changedEdges);

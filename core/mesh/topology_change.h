@@ -8,9 +8,21 @@
 
 namespace weft {
 
+// A vertex inserted on an edge whose two ends are pinned. Such an edge lies in a clamp's jaws, which
+// hold every point of it, so the new vertex is pinned too and follows its ends' pin script from the
+// start interpolated between theirs (sim/cloth_topology.h).
+struct PinnedSplit {
+  int vertex = -1;
+  int from = -1;          // the split edge's ends
+  int to = -1;
+  double fraction = 0.5;  // where along from -> to
+};
+
 struct TopologyChange {
   std::vector<int> newVertices;                  // appended vertices (edge-split points and copies), ascending
   std::vector<std::pair<int, int>> vertexCopies;  // (original, copy) for each vertex separated in two, in order made
+  std::vector<PinnedSplit> pinnedSplits;         // split points between two pinned vertices, in order made
+                                                 // (before any copy of them in vertexCopies)
   std::vector<int> changedTriangles;             // triangles whose vertices or rest data changed, and new ones (sorted)
   std::vector<int> newTriangles;                 // the appended triangles (ascending)
   std::vector<int> changedEdges;                 // edges whose endpoints or triangles changed, edges of every

@@ -30,18 +30,43 @@ void refreshHinges(Cloth& cloth, const TopologyChange& change) {
   }
 }
 
-// A copy is the same material point as its original, so it follows the same script from the
-// same start.
+// Inserts `vertex` (not yet in it) into a track, keeping its vertices sorted.
+void addToTrack(PinTrack& track, int vertex, const Vec3& start) {
+  const auto slot = std::lower_bound(track.vertices.begin(), track.vertices.end(), vertex);
+  const auto offset = slot - track.vertices.begin();
+  track.vertices.insert(slot, vertex);
+  track.start.insert(track.start.begin() + offset, start);
+}
+
+// The vertex's start in the track, or none when the track does not hold it.
+std::optional<Vec3> startIn(const PinTrack& track, int vertex) {
+  const auto found = std::lower_bound(track.vertices.begin(), track.vertices.end(), vertex);
+  if (found == track.vertices.end() || *found != vertex) return std::nullopt;
+  return track.start[found - track.vertices.begin()];
+}
+
+// A point inserted between two pinned vertices joins every track of the first end, from the start
+// interpolated between the ends' (the second end's start from the same track when it holds it,
+// else from the first track that does: an edge between two pins takes the first end's script).
+// Then a copy, which is the same material point as its original, follows the same script from the
+// same start. Splits first: a split point may be separated by the same tear.
 void extendPinTracks(Cloth& cloth, const TopologyChange& change) {
+  for (const PinnedSplit& split : change.pinnedSplits) {
+    std::optional<Vec3> anyToStart;
+    for (const PinTrack& track : cloth.pins) {
+      if ((anyToStart = startIn(track, split.to))) break;
+    }
+    for (PinTrack& track : cloth.pins) {
+      const std::optional<Vec3> fromStart = startIn(track, split.from);
+      if (!fromStart) continue;
+      const std::optional<Vec3> toStart = startIn(track, split.to);
+      const Vec3 end = toStart ? *toStart : anyToStart ? *anyToStart : *fromStart;
+      addToTrack(track, split.vertex, (1.0 - split.fraction) * *fromStart + split.fraction * end);
+    }
+  }
   for (const auto& [original, copy] : change.vertexCopies) {
     for (PinTrack& track : cloth.pins) {
-      const auto found = std::lower_bound(track.vertices.begin(), track.vertices.end(), original);
-      if (found == track.vertices.end() || *found != original) continue;
-      const Vec3 start = track.start[found - track.vertices.begin()];
-      const auto slot = std::lower_bound(track.vertices.begin(), track.vertices.end(), copy);
-      const auto offset = slot - track.vertices.begin();
-      track.vertices.insert(slot, copy);
-      track.start.insert(track.start.begin() + offset, start);
+      if (const std::optional<Vec3> start = startIn(track, original)) addToTrack(track, copy, *start);
     }
   }
 }

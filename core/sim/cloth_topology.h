@@ -10,7 +10,9 @@ namespace weft {
 //   - membranes: remade for the changed and new triangles only;
 //   - hinges: those on changed edges are dropped, and every changed edge that is interior gets a
 //     fresh one (appended), so that the set equals what rebuildElements would build;
-//   - pins: a copy of a pinned vertex joins every PinTrack of its original, at the same start.
+//   - pins: a point inserted between two pinned vertices joins the first one's PinTracks, at the
+//     start interpolated between theirs; a copy of a pinned vertex joins every PinTrack of its
+//     original, at the same start.
 // The integrator's matrix pattern and the contact stage's collision structures are not touched
 // here: the world passes the change to Integrator::topologyChanged and ContactStage::clothTopologyChanged.
 void applyTopologyChange(Cloth& cloth, const TopologyChange& change);

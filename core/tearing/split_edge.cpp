@@ -85,6 +85,13 @@ int splitEdge(ClothMesh& mesh, const EdgeSplitPoint& at, double areaDensity, Top
 
   const int q = mesh.addVertex((1.0 - at.fraction) * mesh.x[from] + at.fraction * mesh.x[to]);
   change.newVertices.push_back(q);
+  // An edge pinned at both ends lies in a clamp's jaws, which hold every point of it: so is the
+  // point inserted on it (else a crack could reach the clamp's edge there and go on into the jaws
+  // from a vertex that is not pinned; tear_mesh.h).
+  if (mesh.pinned[from] && mesh.pinned[to]) {
+    mesh.pinned[q] = 1;
+    change.pinnedSplits.push_back(PinnedSplit{q, from, to, at.fraction});
+  }
 
   // The edge keeps the half at `from`; the half at `to` is appended with the same tags.
   const int toHalf = mesh.edgeCount();

@@ -28,7 +28,8 @@ std::vector<std::array<Vec2, 3>> restShapesAfterSplit(const ClothMesh& mesh, con
 // Splits the edge and returns the new vertex. Its position interpolates the endpoints', its rest
 // coordinates in each triangle interpolate that triangle's endpoint coordinates, and the lumped
 // masses of the triangles' corners are updated for the new areas (`areaDensity` kg/m^2) with
-// momentum kept exactly (see split_edge.cpp).
+// momentum kept exactly (see split_edge.cpp). When both endpoints are pinned the new vertex is
+// pinned too, and listed in change.pinnedSplits.
 int splitEdge(ClothMesh& mesh, const EdgeSplitPoint& at, double areaDensity, TopologyChange& change);
 
 }  // namespace weft

@@ -69,6 +69,18 @@ int splitAndRepair(ClothMesh& mesh, int vertex, const EdgeSplitPoint& at, const 
   return cutEdge;
 }
 
+// Whether the far end of a planned cut is pinned: the spoke's other end (a vertex that moves onto
+// the line first is never pinned, move_vertex.h), or the split point, which is pinned when both
+// ends of the side it splits are (split_edge.h).
+bool farEndPinned(const ClothMesh& mesh, int vertex, const RayCut& cut) {
+  if (cut.followsEdge()) {
+    const Edge& spoke = mesh.edges[cut.spoke];
+    return mesh.pinned[spoke.v[0] == vertex ? spoke.v[1] : spoke.v[0]];
+  }
+  const Triangle& t = mesh.tris[cut.split.triangle];
+  return mesh.pinned[t.v[cut.split.side]] && mesh.pinned[t.v[(cut.split.side + 1) % 3]];
+}
+
 }  // namespace
 
 bool tearThroughVertex(ClothMesh& mesh, int vertex, const Vec2& direction, const TearGuards& guards,
@@ -94,6 +106,14 @@ bool tearThroughVertex(ClothMesh& mesh, int vertex, const Vec2& direction, const
   for (const Vec2& ray : closed ? std::vector<Vec2>{along, -along} : std::vector<Vec2>{along}) {
     if (cornerOf(mesh.tris[start], vertex) == kNone) start = findTriangleAt(mesh, vertex);  // flipped away
     const std::optional<RayCut> cut = planRayCut(mesh, walkFan(mesh, vertex, start), ray, guards, keep);
+    // A line whose two ends are pinned never tears: cloth held in a clamp's jaws cannot open. The
+    // stress read at a pinned vertex comes from its free triangles below the clamp, while the
+    // triangles between pinned vertices carry no strain, so without this a crack runs on into the
+    // clamp (docs/tearing.md). Refused like any other ray: the stage falls back to the next line.
+    if (cut && mesh.pinned[vertex] && farEndPinned(mesh, vertex, *cut)) {
+      if (before && !cutEdges.empty()) mesh = std::move(*before);
+      return false;
+    }
     if (!cut) {
       if (before && !cutEdges.empty()) mesh = std::move(*before);
       return false;

@@ -11,6 +11,7 @@
 //      the pieces pass the guards, or else moves the nearer end of that side onto the line and
 //      follows its edge (move_vertex.h), so the crack stays on the line the physics chose. Each
 //      ray is planned on the mesh as the rays before it left it and carried out at once.
+//      A ray from a pinned vertex whose far end is pinned too is refused: the clamp holds both.
 //   2. Open the cut edges and separate every vertex left with two fans (separate_vertex.h): the
 //      torn vertex itself and any far end already on a border. So a tear that reaches the border
 //      or another tear opens the cloth.
@@ -31,7 +32,9 @@ namespace weft {
 // frame of Triangle::rest; need not be unit). `areaDensity` (kg/m^2) is the cloth's, for the
 // lumped masses. Returns false, with the mesh untouched and `outChange` empty, when no valid tear
 // exists: every ray points out of the fan, would run along a border edge or cannot keep the guards,
-// or the direction is zero or not finite (an interior vertex needs both of its rays).
+// would open a line whose two ends are pinned (a pinned vertex to a pinned vertex, or to a point
+// inserted between two pinned vertices: held in a clamp's jaws, it cannot open), or the direction
+// is zero or not finite (an interior vertex needs both of its rays).
 bool tearThroughVertex(ClothMesh& mesh, int vertex, const Vec2& direction, const TearGuards& guards,
                        double areaDensity, TopologyChange& outChange);
 

@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <numbers>
 
 #include "mesh/grid.h"
 #include "tearing/tear_mesh.h"
@@ -64,6 +66,34 @@ TEST(ClothTopology, ACopyOfAPinnedVertexJoinsItsTrackAtTheSameStart) {
   ASSERT_EQ(after.start.size(), 4u);
   EXPECT_EQ(after.start[3], after.start[1]);
   EXPECT_EQ(cloth.mesh.pinned[copy], 1);
+}
+
+// A point a tear inserts between two pinned vertices is held by the same clamp: it joins their
+// track, from the start interpolated between theirs.
+TEST(ClothTopology, APointInsertedBetweenTwoPinnedVerticesJoinsTheirTrackBetweenTheirStarts) {
+  Cloth cloth = gridCloth();
+  PinTrack track;
+  for (int v = 15; v < 25; ++v) {
+    track.vertices.push_back(v);
+    track.start.push_back(cloth.mesh.x[v] + Vec3(0, 0, v));  // distinct starts, to see the interpolation
+    cloth.mesh.pinned[v] = 1;
+  }
+  cloth.pins.push_back(track);
+  TopologyChange change;
+  const Vec2 along(std::cos(65.0 * std::numbers::pi / 180.0), std::sin(65.0 * std::numbers::pi / 180.0));
+  ASSERT_TRUE(tearThroughVertex(cloth.mesh, 12, along, TearGuards{}, cloth.material.areaDensity, change));
+  applyTopologyChange(cloth, change);
+  ASSERT_EQ(change.pinnedSplits.size(), 1u);
+  const PinnedSplit& split = change.pinnedSplits[0];
+  const PinTrack& after = cloth.pins[0];
+  EXPECT_TRUE(std::is_sorted(after.vertices.begin(), after.vertices.end()));
+  ASSERT_EQ(after.vertices.size(), track.vertices.size() + 1);
+  ASSERT_EQ(after.start.size(), after.vertices.size());
+  const auto at = std::find(after.vertices.begin(), after.vertices.end(), split.vertex);
+  ASSERT_NE(at, after.vertices.end());
+  const Vec3 expected = (1.0 - split.fraction) * track.start[split.from - 15] + split.fraction * track.start[split.to - 15];
+  EXPECT_LT((after.start[at - after.vertices.begin()] - expected).norm(), 1e-12);
+  EXPECT_EQ(cloth.mesh.pinned[split.vertex], 1);
 }
 
 }  // namespace

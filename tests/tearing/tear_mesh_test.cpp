@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -295,6 +296,54 @@ TEST(TearMesh, PinnedVerticesPassTheFlagToTheirCopies) {
   ASSERT_TRUE(tearThroughVertex(mesh, 12, Vec2(1, 0), TearGuards{}, kDensity, change));
   ASSERT_EQ(change.vertexCopies.size(), 1u);
   EXPECT_EQ(mesh.pinned[change.vertexCopies[0].second], 1);
+}
+
+// A line whose two ends are pinned never tears: cloth held in a clamp's jaws cannot open. The top
+// two rows of the 5 x 5 grid are the clamp (0.25 m cells). Refused: a line from a pinned vertex to
+// a pinned vertex, and one across a clamped triangle to a point it would insert between two; the
+// mesh is left as it was. A crack from the free cloth still reaches the clamp's edge, and stops
+// there: no ray from its tip into the clamp tears.
+TEST(TearMesh, ALineWhoseTwoEndsArePinnedIsRefused) {
+  ClothMesh mesh = grid(5);
+  for (int v = 15; v < 25; ++v) mesh.pinned[v] = 1;
+  const ClothMesh before = mesh;
+  TopologyChange change;
+  EXPECT_FALSE(tearThroughVertex(mesh, 17, Vec2(1, 0), TearGuards{}, kDensity, change));  // along the clamp's edge
+  EXPECT_FALSE(tearThroughVertex(mesh, 17, Vec2(0, 1), TearGuards{}, kDensity, change));  // up into it (and down)
+  EXPECT_FALSE(tearThroughVertex(mesh, 17, atDegrees(135), TearGuards{}, kDensity, change));  // to the middle of 16-22
+  EXPECT_FALSE(tearThroughVertex(mesh, 22, Vec2(0, -1), TearGuards{}, kDensity, change));  // from the border in
+  EXPECT_TRUE(change.newVertices.empty());
+  test::expectSameMesh(mesh, before);
+
+  ASSERT_TRUE(tearThroughVertex(mesh, 12, Vec2(0, 1), TearGuards{}, kDensity, change));
+  EXPECT_TRUE(valid(mesh));
+  EXPECT_NE(std::find(change.crackEnds.begin(), change.crackEnds.end(), 17), change.crackEnds.end());
+  for (double deg = 0.0; deg <= 180.0; deg += 15.0) {
+    EXPECT_FALSE(tearThroughVertex(mesh, 17, atDegrees(deg), TearGuards{}, kDensity, change)) << deg;
+  }
+}
+
+// A crack from the free cloth that meets the clamp's edge between two pinned vertices inserts a
+// point there. The jaws hold it as they hold its neighbours: it is pinned, and no ray from it into
+// the clamp tears (else the crack would go on into the jaws from a vertex that is not pinned).
+TEST(TearMesh, APointInsertedBetweenTwoPinnedVerticesIsPinnedAndHeld) {
+  ClothMesh mesh = grid(5);
+  for (int v = 15; v < 25; ++v) mesh.pinned[v] = 1;
+  TopologyChange change;
+  // From (0.5, 0.5) at 65 degrees: across triangle (12, 18, 17) to edge 17-18, on the clamp's edge.
+  ASSERT_TRUE(tearThroughVertex(mesh, 12, atDegrees(65), TearGuards{}, kDensity, change));
+  EXPECT_TRUE(valid(mesh));
+  ASSERT_EQ(change.pinnedSplits.size(), 1u);
+  const PinnedSplit split = change.pinnedSplits[0];
+  EXPECT_EQ(std::minmax(split.from, split.to), std::minmax(17, 18));
+  int pinnedNew = 0;
+  for (int v : change.newVertices) pinnedNew += mesh.pinned[v];
+  EXPECT_EQ(pinnedNew, 1);  // the other ray's split point, in the free cloth, is free
+  EXPECT_EQ(mesh.pinned[split.vertex], 1);
+  EXPECT_NE(std::find(change.crackEnds.begin(), change.crackEnds.end(), split.vertex), change.crackEnds.end());
+  for (double deg = 0.0; deg <= 180.0; deg += 15.0) {
+    EXPECT_FALSE(tearThroughVertex(mesh, split.vertex, atDegrees(deg), TearGuards{}, kDensity, change)) << deg;
+  }
 }
 
 }  // namespace

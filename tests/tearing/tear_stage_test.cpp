@@ -2,7 +2,9 @@
 // tips that need less than intact cloth (initiation against propagation).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "sim/cloth.h"
 #include "sim/cloth_topology.h"
@@ -162,6 +164,75 @@ TEST(TearStage, ANotchRunsWhereAnIntactSheetHoldsWhenTipsNeedLessStrength) {
       }
     }
   }
+}
+
+// Where the torn edges of a cloth lie: the highest rest y any of them reaches, and how many join
+// two pinned vertices.
+struct TornEdges {
+  int count = 0;
+  int bothEndsPinned = 0;
+  double highestRestY = -1.0;
+};
+TornEdges tornEdges(const ClothMesh& mesh) {
+  TornEdges torn;
+  for (const Edge& edge : mesh.edges) {
+    if (!edge.torn) continue;
+    ++torn.count;
+    torn.bothEndsPinned += mesh.pinned[edge.v[0]] && mesh.pinned[edge.v[1]];
+    const Triangle& t = mesh.tris[edge.tri[0]];
+    for (int v : edge.v) torn.highestRestY = std::max(torn.highestRestY, t.rest[cornerOf(t, v)].y());
+  }
+  return torn;
+}
+
+// A line whose two ends are pinned never tears: cloth held in a clamp's jaws cannot open. The
+// sheet is stretched and then clamped along its top four rows (rest y >= 0.7: the jaws hold it
+// stretched, so the triangles between pinned vertices carry the same load as the free ones); a
+// notch runs up from the bottom border, step after step, as in the test above. It tears right up
+// to the clamp's edge (the first pinned row) and stops there: no torn edge joins two pinned
+// vertices. (Without the rule it runs on through the jaws to the top border.)
+TEST(TearStage, ACrackRunsUpToAClampsEdgeAndNotIntoTheJaws) {
+  Scene scene = sheetScene(test::tearTable({1.0}, 1.0));
+  const double e = 0.01;
+  PinGroup clamp;
+  clamp.restBox = std::pair(Vec2(-e, 0.7 - e), Vec2(1.0 + e, 1.0 + e));
+  scene.cloths[0].pins = {clamp};
+  Cloth cloth = buildCloth(scene.cloths[0], "test", 0);
+  ASSERT_EQ(cloth.pins.size(), 1u);
+  ASSERT_EQ(cloth.pins[0].vertices.size(), 44u);  // four rows of eleven
+  // A notch from the bottom border's middle, three cells up.
+  int tip = vertexAt(cloth.mesh, Vec2(0.5, 0.0));
+  for (int k = 0; k < 3; ++k) {
+    TopologyChange change;
+    ASSERT_TRUE(tearThroughVertex(cloth.mesh, tip, Vec2(0, 1), TearGuards{}, cloth.material.areaDensity, change));
+    applyTopologyChange(cloth, change);
+    tip = change.crackEnds.at(0);
+  }
+  Cloth intact = buildCloth(sheetScene(test::tearTable({1.0}, 1.0)).cloths[0], "test", 0);
+  prestress(intact, 0.05);
+  const double zeta = largestSeparation(intact);
+  ASSERT_GT(zeta, 10.0);
+  Cloth loaded = cloth;
+  prestress(loaded, 0.05);
+  TearTable table = test::tearTable({1.0}, zeta / 0.4);  // the intact sheet is at 40% of its strength
+  table.propagationFactor = 0.5;                         // the notch's tip at 160%
+  scene.cloths[0].material.tearTable = table;
+  loaded.material.tearTable = table;
+
+  TearStage stage(scene);
+  std::vector<Cloth> cloths{loaded};
+  StageProfile profile;
+  for (int step = 0; step < 30; ++step) {
+    const std::size_t before = stage.log().size();
+    stage.run(cloths, step * kDt, kDt, profile);
+    if (stage.log().size() == before) break;
+  }
+  const TornEdges torn = tornEdges(cloths[0].mesh);
+  ASSERT_GE(stage.log().size(), 4u);  // 0.3 -> 0.4 -> 0.5 -> 0.6 -> 0.7
+  EXPECT_EQ(torn.bothEndsPinned, 0) << torn.count << " torn edges, up to rest y " << torn.highestRestY;
+  EXPECT_NEAR(torn.highestRestY, 0.7, 1e-9);  // up to the first pinned row, not a row short of it
+  EXPECT_GE(stage.stats().refused, 1);        // the lines into the jaws, refused
+  EXPECT_TRUE(std::all_of(stage.log().begin(), stage.log().end(), [](const TearRecord& r) { return r.ratio > 1.0; }));
 }
 
 }  // namespace
