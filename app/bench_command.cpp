@@ -381,6 +381,11 @@ Command addBenchCommand(CLI::App& app) {
   cli->add_option("--tearing-steps-csv", options->tearingOptions.stepsCsv,
                   "Tearing benchmark: also write every timed step's figures (tears, stage and whole ms, the stage's "
                   "parts, lines evaluated) to this CSV");
+  cli->add_option("--tearing-initiation-every", options->tearingOptions.initiationEvery,
+                  "Tearing benchmark: the growth row's tearing.initiation_every (new cracks looked for every this "
+                  "many steps); 0: the scene's default")
+      ->check(integerIn(0, 1000))
+      ->capture_default_str();
   cli->add_flag("--solver-accuracy", options->solverAccuracy,
                 "Instead of timing, run the scene for --solver-accuracy-duration seconds at each of --sizes with "
                 "each of --solvers and report the largest vertex distance to the first solver's run and the CG "

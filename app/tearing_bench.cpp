@@ -66,6 +66,9 @@ TearingBenchRow measure(const TearingBenchOptions& options, const std::string& n
   // scene's defaults are (the growth mode is the default since issue 17).
   overrides.push_back("tearing.stress_length_m=" + std::to_string(growthMode ? kGrowthStressLength : 0.0));
   overrides.push_back("tearing.incubation_s=" + std::to_string(growthMode ? kGrowthIncubation : 0.0));
+  if (growthMode && options.initiationEvery > 0) {
+    overrides.push_back("tearing.initiation_every=" + std::to_string(options.initiationEvery));
+  }
   TearingBenchRow row;
   row.lines = lines;
   row.bound = bound;

@@ -22,6 +22,9 @@ struct TearingBenchOptions {
   // parts, lines evaluated); empty: not written. The medians hide where the stage's time goes: the
   // steps of an overload wave and those that tear cost several times a quiet step.
   std::string stepsCsv;
+  // The growth row's tearing.initiation_every (new cracks looked for every this many steps); 0:
+  // the scene's default.
+  int initiationEvery = 0;
 };
 
 int runTearingBench(const TearingBenchOptions& options);

@@ -9,7 +9,7 @@ namespace weft {
 TearingSpec parseTearing(const nlohmann::json& j, const std::string& pointer, const SceneReadContext& ctx) {
   const FieldReader r(j, pointer, ctx.file,
                       {"candidates", "dense_directions", "skip_by_bound", "propagate", "crack_speed_m_per_s", "relax_rings",
-                       "relax_sweeps", "crack_tip_length_m", "stress_length_m", "incubation_s", "branch_from_lips", "tears_per_step", "min_spacing_m", "min_edge_length_m", "min_angle_deg",
+                       "relax_sweeps", "crack_tip_length_m", "stress_length_m", "incubation_s", "initiation_every", "branch_from_lips", "tears_per_step", "min_spacing_m", "min_edge_length_m", "min_angle_deg",
                        "snap_angle_deg"});
   TearingSpec tearing;
   const std::string lines = r.string("candidates", "dense");
@@ -36,6 +36,7 @@ TearingSpec parseTearing(const nlohmann::json& j, const std::string& pointer, co
   tearing.incubation = r.number("incubation_s", tearing.incubation, Bound::NonNegative,
                                 "how long a stress must exceed the strength before a crack starts, in s");
   if (tearing.incubation > 10.0) r.fail(r.pointer("incubation_s"), "must be at most 10 s");
+  tearing.initiationEvery = r.integer("initiation_every", tearing.initiationEvery, 1, 1000);
   tearing.branchFromLips = r.boolean("branch_from_lips", tearing.branchFromLips);
   tearing.maxTearsPerStep = r.integer("tears_per_step", tearing.maxTearsPerStep, 1);
   tearing.minSpacing = r.number("min_spacing_m", tearing.minSpacing, Bound::NonNegative,

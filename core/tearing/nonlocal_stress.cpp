@@ -22,16 +22,14 @@ constexpr std::size_t kMaxNeighbours = 256;
 // at its own resolution, not spread over a group.
 constexpr std::size_t kExactNeighbours = 64;
 
-// Walks out from the triangles already in `region` (stamped), across shared edges, adding each
-// triangle first met that `within` accepts: the region grows breadth first, in a fixed order.
+// Walks out from the triangles already in `region` (stamped), across shared edges (`across`, per
+// triangle the one across each edge), adding each triangle first met that `within` accepts: the
+// region grows breadth first, in a fixed order.
 template <typename Within>
-void walkOut(const ClothMesh& mesh, std::vector<int>& region, std::vector<int>& stamp, int currentStamp,
-             const Within& within) {
+void walkOut(const std::vector<std::array<int, 3>>& across, std::vector<int>& region, std::vector<int>& stamp,
+             int currentStamp, const Within& within) {
   for (std::size_t next = 0; next < region.size(); ++next) {
-    const Triangle& tri = mesh.tris[region[next]];
-    for (int e : tri.edge) {
-      const Edge& edge = mesh.edges[e];
-      const int other = edge.tri[0] == region[next] ? edge.tri[1] : edge.tri[0];
+    for (int other : across[region[next]]) {
       if (other == kNone || stamp[other] == currentStamp) continue;
       stamp[other] = currentStamp;
       if (within(other)) region.push_back(other);
@@ -55,12 +53,21 @@ void NonlocalStress::updateCentroids(const ClothMesh& mesh, const std::vector<in
   stamp_.resize(count, 0);
   neighbours_.resize(count);
   scale_.resize(count, 0.0);
+  across_.resize(count, {kNone, kNone, kNone});
   for (int t : triangles) {
     const Triangle& tri = mesh.tris[t];
     centroid_[t] = (tri.rest[0] + tri.rest[1] + tri.rest[2]) / 3.0;
     area_[t] = std::abs(restArea(tri));
     lip_[t] = 0;
     for (int e : tri.edge) lip_[t] = lip_[t] || (mesh.edges[e].torn && mesh.edges[e].isBoundary());
+  }
+}
+
+void NonlocalStress::updateAcross(const ClothMesh& mesh, int t) {
+  const Triangle& tri = mesh.tris[t];
+  for (int k = 0; k < 3; ++k) {
+    const Edge& edge = mesh.edges[tri.edge[k]];
+    across_[t][k] = edge.tri[0] == t ? edge.tri[1] : edge.tri[0];
   }
 }
 
@@ -71,7 +78,7 @@ void NonlocalStress::gather(const ClothMesh& mesh, int t, double reach) {
   stamp_[t] = currentStamp_;
   const Vec2 centre = centroid_[t];
   const double reach2 = reach * reach;
-  walkOut(mesh, region_, stamp_, currentStamp_,
+  walkOut(across_, region_, stamp_, currentStamp_,
           [&](int other) { return (centroid_[other] - centre).squaredNorm() <= reach2; });
 }
 
@@ -89,7 +96,7 @@ void NonlocalStress::gatherAround(const ClothMesh& mesh, const std::vector<int>&
     region_.push_back(t);
   }
   const double reach2 = reach * reach;
-  walkOut(mesh, region_, stamp_, currentStamp_, [&](int other) {
+  walkOut(across_, region_, stamp_, currentStamp_, [&](int other) {
     for (int t : seeds) {
       if ((centroid_[other] - centroid_[t]).squaredNorm() <= reach2) return true;
     }
@@ -218,11 +225,13 @@ void NonlocalStress::rebuild(const ClothMesh& mesh, double radius) {
   lip_.clear();
   neighbours_.clear();
   scale_.clear();
+  across_.clear();
   stamp_.assign(mesh.tris.size(), 0);
   currentStamp_ = 0;
   std::vector<int> all(mesh.tris.size());
   for (int t = 0; t < mesh.triangleCount(); ++t) all[t] = t;
   updateCentroids(mesh, all);
+  for (int t = 0; t < mesh.triangleCount(); ++t) updateAcross(mesh, t);
   for (int t = 0; t < mesh.triangleCount(); ++t) buildNeighbours(mesh, t);
   cachedTriangles_ = mesh.tris.size();
   built_ = true;
@@ -281,7 +290,26 @@ std::vector<int> NonlocalStress::patch(const ClothMesh& mesh, const std::vector<
   for (int t : seeds) {
     if (static_cast<std::size_t>(t) < cachedTriangles_) seedPlaces.push_back(centroid_[t]);
   }
+  // A triangle's neighbours across its edges change when it or the one across an edge changed: the
+  // seeds, the triangles across their edges before the tear (an edge the tear opened no longer
+  // joins them) and after it (an edge the tear split now leads to a new triangle).
+  std::vector<int> rejoined;
+  for (int t : seeds) {
+    if (static_cast<std::size_t>(t) >= cachedTriangles_) continue;
+    for (int other : across_[t]) {
+      if (other != kNone) rejoined.push_back(other);
+    }
+  }
   updateCentroids(mesh, seeds);
+  for (int t : seeds) {
+    rejoined.push_back(t);
+    for (int e : mesh.tris[t].edge) {
+      for (int other : mesh.edges[e].tri) {
+        if (other != kNone) rejoined.push_back(other);
+      }
+    }
+  }
+  for (int t : rejoined) updateAcross(mesh, t);
   for (int t : seeds) seedPlaces.push_back(centroid_[t]);
   gatherAround(mesh, seeds, kPatchReach * radius_);
   // A neighbourhood is the walk from its triangle through triangles whose centroids lie within the

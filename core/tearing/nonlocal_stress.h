@@ -34,6 +34,7 @@
 // list holds at most 256 triangles: on a mesh much finer than the radius the disc's outer part is
 // read at a coarser spacing (nonlocal_stress.cpp, kMaxNeighbours), so memory and time per triangle
 // stay bounded at any resolution (the walk that builds a list still visits the whole disc).
+#include <array>
 #include <cstddef>
 #include <vector>
 
@@ -88,6 +89,8 @@ class NonlocalStress {
   void pack(const std::vector<Mat2>& local);
   Mat2 averageAt(const std::vector<Mat2>& local, int t) const;
   void updateCentroids(const ClothMesh& mesh, const std::vector<int>& triangles);
+  // Triangle t's entry of `across_`, from the mesh's edges.
+  void updateAcross(const ClothMesh& mesh, int t);
 
   double radius_ = 0.0;
   std::size_t cachedTriangles_ = 0;  // the triangle count the cache was built or last patched for
@@ -95,6 +98,9 @@ class NonlocalStress {
   std::vector<Vec2> centroid_;   // material space, per triangle
   std::vector<double> area_;     // rest area, per triangle
   std::vector<char> lip_;        // per triangle: it has a torn border edge (left out of the averages)
+  // Per triangle, the triangle across each of its edges (kNone on a border): the walks read this
+  // rather than the mesh's triangles and edges, a quarter of the memory a step of a walk touches.
+  std::vector<std::array<int, 3>> across_;
   // Per triangle, its neighbourhood in gather order (so a cached average sums exactly as a fresh
   // one). A vector each rather than one packed array: a tear rebuilds a few hundred lists of new
   // lengths, which a packed array could only take by moving all the others.

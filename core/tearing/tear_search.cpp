@@ -69,8 +69,9 @@ void popEntry(std::vector<E>& heap) {
 
 void TearSearch::start(const ClothMesh& mesh, const std::vector<TriangleCorners>& corners,
                        const std::vector<Mat2>& stress, const TearTable& table, double weftAngleRad,
-                       const TearSearchSettings& settings, TearSearchCounts& counts) {
+                       const TearSearchSettings& settings, TearSearchCounts& counts, bool tipsOnly) {
   table_ = &table;
+  tipsOnly_ = tipsOnly;
   weftAngleRad_ = weftAngleRad;
   settings_ = settings;
   const int n = mesh.vertexCount();
@@ -134,9 +135,12 @@ void TearSearch::screenAndLookAtAll(const ClothMesh& mesh, const std::vector<Tri
   // looked at). The same sum in the same order as the bound's, so a vertex it skips has a bound
   // below 1 too.
   largestStress_.resize(stress.size());
-  for (std::size_t t = 0; t < stress.size(); ++t) largestStress_[t] = spectralNorm(stress[t]);
+  if (!tipsOnly_) {
+    for (std::size_t t = 0; t < stress.size(); ++t) largestStress_[t] = spectralNorm(stress[t]);
+  }
   const double screen = (1.0 + 1e-9) / weakestStrength(*table_);
   for (int v = 0; v < n; ++v) {
+    if (tipsOnly_ && !onBorder_[v]) continue;  // no crack there: nothing it could be asked
     if (settings_.skipByBound && !onBorder_[v] && rowStart_[v] < rowStart_[v + 1]) {
       double weighted = 0.0;
       for (int i = rowStart_[v]; i < rowStart_[v + 1]; ++i) weighted += largestStress_[around_[i]] * aroundSpan_[i];
@@ -259,6 +263,7 @@ void TearSearch::boundAt(const ClothMesh& mesh, const std::vector<TriangleCorner
   if (place != CrackPlace::None && place_[vertex] == CrackPlace::None) crackVertices_.push_back(vertex);
   place_[vertex] = place;
   if (place == CrackPlace::Lip && !settings_.branchFromLips) return;  // cracks grow at their tips
+  if (tipsOnly_ && place != CrackPlace::Tip) return;
   if (place == CrackPlace::Tip && settings_.tipLength > 0.0) {
     // The tip reads the material ahead of it, not its fan: no bound from the fan (tips are few).
     bound_[vertex] = std::numeric_limits<double>::infinity();

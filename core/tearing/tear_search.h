@@ -44,8 +44,11 @@ class TearSearch {
   // kept from the last start when nothing has changed the mesh since: no refresh (no tear) and
   // the same vertex and triangle counts. A caller that searches another mesh with the same object
   // calls forgetMesh first.
+  // `tipsOnly`: this step offers only the tips of cracks (no vertex starts a crack, none is asked
+  // whether it could): the vertices off the cloth's borders, where no crack is, are not looked at.
   void start(const ClothMesh& mesh, const std::vector<TriangleCorners>& corners, const std::vector<Mat2>& stress,
-             const TearTable& table, double weftAngleRad, const TearSearchSettings& settings, TearSearchCounts& counts);
+             const TearTable& table, double weftAngleRad, const TearSearchSettings& settings, TearSearchCounts& counts,
+             bool tipsOnly = false);
   void forgetMesh() { rowsValid_ = false; }
   // The vertices of these triangles (changed by a tear, or with a new stress), and `vertices`
   // (those whose fans a tear opened without changing a triangle), looked at again; new vertices
@@ -124,6 +127,7 @@ class TearSearch {
   std::vector<char> held_;
   std::vector<char> mature_;             // per vertex, with gated starts: may start a crack now
   bool gated_ = false;
+  bool tipsOnly_ = false;                // this step offers crack tips only (start's argument)
   std::vector<Overloaded> newlyOverloaded_;
   std::vector<char> sharpened_;          // per vertex: bound_ is already the piecewise bound
   std::vector<CrackPlace> place_;        // per vertex, as last looked at

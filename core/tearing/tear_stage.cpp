@@ -134,16 +134,21 @@ std::vector<TopologyChange> TearStage::run(std::vector<Cloth>& cloths, const std
   if (!runs_) return changed;
   if (corners_.size() != cloths.size()) corners_.resize(cloths.size());
   if (nonlocal_.size() != cloths.size()) nonlocal_.resize(cloths.size());
+  if (toreLastStep_.size() != cloths.size()) toreLastStep_.resize(cloths.size(), 0);
+  const bool sample = steps_ % spec_.initiationEvery == 0;
+  ++steps_;
   for (std::size_t c = 0; c < cloths.size(); ++c) {
     if (!cloths[c].material.tearTable) continue;
+    if (!sample && !toreLastStep_[c]) continue;  // no running crack, and no new one looked for
     changed[c] = tearCloth(cloths[c], static_cast<int>(c), c < ahead.size() ? &ahead[c] : nullptr, time, dt, threads,
-                           profile);
+                           !sample, profile);
+    toreLastStep_[c] = !changed[c].empty();
   }
   return changed;
 }
 
 TopologyChange TearStage::tearCloth(Cloth& cloth, int clothIndex, const MembraneAhead* ahead, double time, double dt,
-                                   int threads, StageProfile& profile) {
+                                   int threads, bool tipsOnly, StageProfile& profile) {
   TopologyChange changed;
   const TearTable& table = *cloth.material.tearTable;
   TearGuards guards;
@@ -179,8 +184,8 @@ TopologyChange TearStage::tearCloth(Cloth& cloth, int clothIndex, const Membrane
     search_.setTearRegion(cloth.tearRegion ? &*cloth.tearRegion : nullptr);
     if (clothIndex != searchedCloth_) search_.forgetMesh();
     searchedCloth_ = clothIndex;
-    search_.start(cloth.mesh, corners, stress_, table, cloth.weftAngleRad, searchSettings_, stats_.search);
-    if (spec_.incubation > 0.0 && !incubated(Incubating{time - dt, 0.0}, time, dt)) {
+    search_.start(cloth.mesh, corners, stress_, table, cloth.weftAngleRad, searchSettings_, stats_.search, tipsOnly);
+    if (!tipsOnly && spec_.incubation > 0.0 && !incubated(Incubating{time - dt, 0.0}, time, dt)) {
       // Only vertices that have waited long enough are offered as crack starts; the others are
       // asked only whether they are (still) overloaded.
       std::vector<char> mature(cloth.mesh.x.size(), 0);
@@ -220,6 +225,10 @@ TopologyChange TearStage::tearCloth(Cloth& cloth, int clothIndex, const Membrane
     // once along an evenly loaded border would all run, side by side.
     const bool continues = fronts.frontAt.contains(vertex);
     const bool starts = !continues && !best->crackTip;
+    if (starts && tipsOnly) {  // a lip with branch_from_lips: it starts a crack, at the next sample
+      search_.exclude(vertex);
+      continue;
+    }
     if (starts && spec_.incubation > 0.0) {
       // Held vertices are never offered as starts: this one has waited long enough, or its omega
       // has just gone above 1.
@@ -347,7 +356,8 @@ TopologyChange TearStage::tearCloth(Cloth& cloth, int clothIndex, const Membrane
   }
   // A vertex not offered this step dropped below omega = 1, unless the step stopped before offering
   // everything above 1 (its tear budget ran out): then the vertices of the last step keep waiting.
-  if (spec_.incubation > 0.0) {
+  // Between samples no vertex was asked: the clocks wait for the next sample as they are.
+  if (spec_.incubation > 0.0 && !tipsOnly) {
     // The vertices whose omega went above 1 this step start their clocks.
     for (const TearSearch::Overloaded& found : search_.newlyOverloaded()) {
       overloadedNow.try_emplace(found.vertex, Incubating{time - dt, found.angle});

@@ -24,7 +24,8 @@ TEST(TearingJson, APresetTableAnInlineTableAndTheSectionAreRead) {
   json scene = sheet();
   scene["cloths"][0]["tear_table"] = "karaoz2015-table4.1-cloth3";
   scene["tearing"] = json::parse(R"({"candidates": "dense", "dense_directions": 90, "tears_per_step": 3,
-      "min_spacing_m": 0.2, "min_angle_deg": 10, "skip_by_bound": false, "incubation_s": 0.03})");
+      "min_spacing_m": 0.2, "min_angle_deg": 10, "skip_by_bound": false, "incubation_s": 0.03,
+      "initiation_every": 4})");
   Scene s = loadScene(dir.write("t.json", scene.dump()));
   ASSERT_TRUE(s.cloths[0].material.tearTable.has_value());
   EXPECT_EQ(s.cloths[0].material.tearTable->name, "karaoz2015-table4.1-cloth3");
@@ -36,6 +37,7 @@ TEST(TearingJson, APresetTableAnInlineTableAndTheSectionAreRead) {
   EXPECT_DOUBLE_EQ(s.tearing.minAngleDeg, 10.0);
   EXPECT_FALSE(s.tearing.skipByBound);
   EXPECT_DOUBLE_EQ(s.tearing.incubation, 0.03);
+  EXPECT_EQ(s.tearing.initiationEvery, 4);
 
   // Inline in the material, then replaced by the cloth's own.
   scene = sheet();
@@ -124,6 +126,12 @@ INSTANTIATE_TEST_SUITE_P(
         BadTearing{"WideAngleGuard", R"({"tearing": {"min_angle_deg": 45}})", "/tearing/min_angle_deg", "30"},
         BadTearing{"NegativeIncubation", R"({"tearing": {"incubation_s": -0.01}})", "/tearing/incubation_s", ""},
         BadTearing{"HugeIncubation", R"({"tearing": {"incubation_s": 1e300}})", "/tearing/incubation_s", "10 s"},
+        BadTearing{"ZeroInitiationEvery", R"({"tearing": {"initiation_every": 0}})", "/tearing/initiation_every",
+                   ""},
+        BadTearing{"FractionalInitiationEvery", R"({"tearing": {"initiation_every": 2.5}})",
+                   "/tearing/initiation_every", ""},
+        BadTearing{"HugeInitiationEvery", R"({"tearing": {"initiation_every": 1e9}})", "/tearing/initiation_every",
+                   "1000"},
         BadTearing{"UnknownKey", R"({"tearing": {"speed": 1}})", "/tearing/speed", "speed"}),
     [](const auto& info) { return info.param.name; });
 

@@ -235,5 +235,83 @@ TEST(TearStage, ACrackRunsUpToAClampsEdgeAndNotIntoTheJaws) {
   EXPECT_TRUE(std::all_of(stage.log().begin(), stage.log().end(), [](const TearRecord& r) { return r.ratio > 1.0; }));
 }
 
+// Sampled initiation (tearing.initiation_every = k): new cracks are looked for every k-th step;
+// between samples a cloth that tore in the step before runs its cracks on, and nothing new starts.
+// The intact sheet is loaded to 120% of its strength everywhere: with k = 1 it starts a crack in
+// the first loaded step; with k = 3 not before the next sample (steps count from the stage's
+// first run, a calm step here).
+TEST(TearStage, NewCracksAreLookedForOnlyAtSampleSteps) {
+  Cloth intact = buildCloth(sheetScene(test::tearTable({1.0}, 1.0)).cloths[0], "test", 0);
+  prestress(intact, 0.05);
+  const double zeta = largestSeparation(intact);
+  ASSERT_GT(zeta, 10.0);
+  const TearTable table = test::tearTable({1.0}, zeta / 1.2);
+  Cloth calm = buildCloth(sheetScene(table).cloths[0], "test", 0);
+  intact.material.tearTable = table;
+  for (const int every : {1, 3}) {
+    Scene scene = sheetScene(table);
+    scene.tearing.initiationEvery = every;
+    TearStage stage(scene);
+    std::vector<Cloth> cloths{calm};
+    StageProfile profile;
+    stage.run(cloths, 0.0, kDt, profile);
+    ASSERT_TRUE(stage.log().empty());
+    cloths[0] = intact;
+    int firstTearStep = -1;
+    for (int step = 1; step <= 4 && firstTearStep < 0; ++step) {
+      stage.run(cloths, step * kDt, kDt, profile);
+      if (!stage.log().empty()) firstTearStep = step;
+    }
+    EXPECT_EQ(firstTearStep, every == 1 ? 1 : 3) << "initiation_every " << every;
+  }
+}
+
+// Between samples a crack that ran in the step before runs on from its tip, and nothing new
+// starts. A notch's tip at 160% of its strength tears in the first step (a sample); before the
+// second, a bulge of stretch far from the notch overloads the intact cloth there more than the
+// tip. One tear a step: with k = 1 the second step starts a crack at the bulge (the best ratio);
+// with k = 4 it is not a sample and the notch runs on instead.
+TEST(TearStage, BetweenSamplesARunningCrackRunsOnAndNothingNewStarts) {
+  Scene scene = sheetScene(test::tearTable({1.0}, 1.0));
+  Cloth notched = buildCloth(scene.cloths[0], "test", 0);
+  int tip = vertexAt(notched.mesh, Vec2(0.5, 0.0));
+  for (int k = 0; k < 3; ++k) {
+    TopologyChange change;
+    ASSERT_TRUE(tearThroughVertex(notched.mesh, tip, Vec2(0, 1), TearGuards{}, notched.material.areaDensity, change));
+    applyTopologyChange(notched, change);
+    tip = change.crackEnds.at(0);
+  }
+  Cloth intact = buildCloth(scene.cloths[0], "test", 0);
+  prestress(intact, 0.05);
+  const double zeta = largestSeparation(intact);
+  ASSERT_GT(zeta, 10.0);
+  TearTable table = test::tearTable({1.0}, zeta / 0.4);  // the intact sheet at 40% of its strength
+  table.propagationFactor = 0.5;                         // the notch's tip at 160%
+  scene.cloths[0].material.tearTable = table;
+  prestress(notched, 0.05);
+  notched.material.tearTable = table;
+  const Vec2 bulge(0.2, 0.6);
+
+  for (const int every : {1, 4}) {
+    scene.tearing.initiationEvery = every;
+    TearStage stage(scene);
+    std::vector<Cloth> cloths{notched};
+    StageProfile profile;
+    stage.run(cloths, 0.0, kDt, profile);
+    ASSERT_EQ(stage.log().size(), 1u);
+    ASSERT_EQ(stage.log()[0].vertex, tip);
+    prestress(cloths[0], 0.05, 0.3, bulge);
+    stage.run(cloths, kDt, kDt, profile);
+    ASSERT_EQ(stage.log().size(), 2u) << "initiation_every " << every;
+    const TearRecord& second = stage.log()[1];
+    if (every == 1) {
+      EXPECT_LT((second.restPosition - bulge).norm(), 0.15) << "the bulge starts a crack when every step is a sample";
+    } else {
+      EXPECT_NEAR(second.restPosition.x(), 0.5, 1e-3) << "the notch runs on";
+      EXPECT_NEAR(second.restPosition.y(), 0.4, 1e-3);
+    }
+  }
+}
+
 }  // namespace
 }  // namespace weft
