@@ -34,9 +34,9 @@ struct TearingSpec {
   // 0: a crack starts as soon as omega > 1 (the thesis). tear_stage.h says why.
   double incubation = 0.06;
   // Steps: new cracks are looked for every this many steps (the step's count since the start, a
-  // multiple of it); in between, a cloth is searched only in a step after one in which it tore,
-  // and then only its cracks' tips run on (no vertex is asked whether it starts a crack, and the
-  // incubation clocks wait for the next sample). 1: every step (tear_stage.h says what it costs).
+  // multiple of it); in between, only a torn cloth's crack tips are searched, so cracks run on
+  // every step (no vertex is asked whether it starts a crack, and the incubation clocks wait for
+  // the next sample). 1: every step (tear_stage.h says what it costs).
   int initiationEvery = 1;
   bool branchFromLips = false;   // a vertex on a crack's flank may start a new crack (shattering)
   int maxTearsPerStep = 1;       // per cloth per step: new cracks (with propagate) or lines (without);

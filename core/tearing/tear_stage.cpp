@@ -37,6 +37,11 @@ constexpr int kMaxTearsPerStep = 4096;
 // concentrating the load at least twofold would see it.
 constexpr double kRunOnRatio = 0.5;
 
+// Whether the cloth has been torn (its cracks' tips may run on between initiation samples).
+bool hasCracks(const ClothMesh& mesh) {
+  return std::any_of(mesh.edges.begin(), mesh.edges.end(), [](const Edge& edge) { return edge.torn; });
+}
+
 // Moves each copy of a separated vertex (and its original) towards the middle of its own
 // triangles, so the lips of the tear no longer coincide. Velocities are not touched (momentum is
 // kept); the masses do not move by more than a micrometre.
@@ -134,15 +139,13 @@ std::vector<TopologyChange> TearStage::run(std::vector<Cloth>& cloths, const std
   if (!runs_) return changed;
   if (corners_.size() != cloths.size()) corners_.resize(cloths.size());
   if (nonlocal_.size() != cloths.size()) nonlocal_.resize(cloths.size());
-  if (toreLastStep_.size() != cloths.size()) toreLastStep_.resize(cloths.size(), 0);
   const bool sample = steps_ % spec_.initiationEvery == 0;
   ++steps_;
   for (std::size_t c = 0; c < cloths.size(); ++c) {
     if (!cloths[c].material.tearTable) continue;
-    if (!sample && !toreLastStep_[c]) continue;  // no running crack, and no new one looked for
+    if (!sample && !hasCracks(cloths[c].mesh)) continue;  // no tip to run on, and no new crack looked for
     changed[c] = tearCloth(cloths[c], static_cast<int>(c), c < ahead.size() ? &ahead[c] : nullptr, time, dt, threads,
                            !sample, profile);
-    toreLastStep_[c] = !changed[c].empty();
   }
   return changed;
 }

@@ -22,10 +22,9 @@
 // delay each spike started a crack of its own, where and whether depending on the mesh (measured:
 // the pulled sheet tore 1.3 / 2.4 / 2.3 m at 32 / 48 / 64^2; with 0.04 s, 1.00 m at each).
 // With `initiation_every` k > 1, new cracks are looked for in every k-th step only (a sample); in
-// between, a cloth is looked at only in the step after one in which it tore, and then only its
-// cracks' tips are offered (TearSearch's tips-only start): running cracks go on at their speed
-// while the whole sheet's incubation questions, which cost a loaded sheet a search of every
-// vertex a step, are asked k times less often. The incubation clocks read a vertex's overload at
+// between, only a torn cloth's crack tips are offered (TearSearch's tips-only start): cracks run
+// on every step as with k = 1, while the whole sheet's start and incubation questions, which cost
+// a loaded sheet a search of every vertex a step, are asked k times less often. The incubation clocks read a vertex's overload at
 // the samples, so a crack starts up to k - 1 steps later than with k = 1.
 // Every cache of the cloth is updated locally; the integrators and the contact stage are told by
 // the world, with what changed, and patch what depends on the topology.
@@ -90,7 +89,6 @@ class TearStage {
   CrackRelaxationSettings relaxation_;
   bool runs_ = false;
   long long steps_ = 0;             // the steps this stage has run (its samples are multiples of k)
-  std::vector<char> toreLastStep_;  // per cloth: it tore in the stage's last step
   std::vector<Mat2> localStress_;  // sigma+ per triangle, as tensile_stress.h gives it
   std::vector<Mat2> stress_;       // what the search reads: localStress_, averaged when stress_length > 0
   std::vector<NonlocalStress> nonlocal_;  // per cloth: its neighbourhoods are its mesh's, patched after each tear
