@@ -40,10 +40,9 @@ ContactStage::ContactStage(const Scene& scene) : spec_(scene.contact), ground_(s
   obstacleCache_.add(obstaclePairing_, holdReach());
   clothCache_ = PairCache(kSkinPerThickness * spec_.thickness);
   clothCache_.add(clothPairing_, spec_.thickness);
-  // BDF2 (linearized) takes a backward Euler step while vertices are held (integrate/bdf2.h).
+  // The implicit integrators hold them; BDF2 then takes a backward Euler step (integrate/bdf2.h).
   holdsVertices_ = (!obstaclePairing_.empty() || ground_.enabled) &&
-                   (scene.solver.integrator == IntegratorKind::LinearizedBackwardEuler ||
-                    scene.solver.integrator == IntegratorKind::Bdf2);
+                   scene.solver.integrator != IntegratorKind::SymplecticEuler;
   bodies_.resize(static_cast<std::size_t>(clothCount + obstacleCount));
   clothTopology_.resize(static_cast<std::size_t>(clothCount));
   clothRest_.resize(static_cast<std::size_t>(clothCount));

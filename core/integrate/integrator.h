@@ -45,6 +45,16 @@ struct HeldVertex {
   Vec3 reaction = Vec3::Zero();  // out: impulse the vertex received from the obstacle (N s)
 };
 
+// The 3x3 weight (kg) a held vertex adds to its row of the step's momentum balance: massShare for
+// ShareMass; for NormalSupport, kNormalSupportWeight times `diagonal()` (the vertex's largest
+// diagonal entry of that balance, in kg) along the normal, read on its first use in the step.
+template <typename Diagonal>
+Mat3 holdWeight(HeldVertex& held, const Diagonal& diagonal) {
+  if (held.kind == HeldVertex::Kind::ShareMass) return held.massShare * Mat3::Identity();
+  if (held.massShare == 0.0) held.massShare = HeldVertex::kNormalSupportWeight * diagonal();
+  return held.massShare * held.normal * held.normal.transpose();
+}
+
 struct StepInputs {
   double time = 0.0;  // time at the start of the step (s)
   double dt = 0.0;    // step length (s)
@@ -53,8 +63,8 @@ struct StepInputs {
   DampingSpec damping;
   bool bending = true;
   int threads = 1;
-  // Linearized backward Euler only, and BDF2 linearized, which then takes a backward Euler step
-  // (bdf2.h); the other integrators leave contact to the impulses.
+  // The implicit integrators (linearized backward Euler, Newton, and BDF2 of either, which then
+  // takes a backward Euler step: bdf2.h); symplectic Euler leaves contact to the impulses.
   std::vector<HeldVertex>* heldVertices = nullptr;
   // The editor's grab on this cloth (forces/grab_spring.h); null: nothing grabbed. Part of the
   // implicit solve (force and Jacobian) in the implicit integrators.

@@ -78,14 +78,8 @@ void LinearizedBackwardEuler::advance(Cloth& cloth, const StepInputs& in, StageP
 }
 
 Mat3 LinearizedBackwardEuler::holdWeight(HeldVertex& held) const {
-  if (held.kind == HeldVertex::Kind::ShareMass) return held.massShare * Mat3::Identity();
-  if (held.massShare == 0.0) {  // first use this step: scaled to the vertex's assembled diagonal
-    const SystemMatrix::Sparse& A = system_.matrix.matrix();
-    const double diagonal = std::max({A.coeff(3 * held.vertex, 3 * held.vertex), A.coeff(3 * held.vertex + 1, 3 * held.vertex + 1),
-                         A.coeff(3 * held.vertex + 2, 3 * held.vertex + 2)});
-    held.massShare = HeldVertex::kNormalSupportWeight * diagonal;
-  }
-  return held.massShare * held.normal * held.normal.transpose();
+  // The balance is the velocity system itself (kg): its assembled diagonal.
+  return weft::holdWeight(held, [&] { return system_.matrix.largestDiagonal(held.vertex); });
 }
 
 void LinearizedBackwardEuler::reportReactions(const StepInputs& in) {

@@ -29,7 +29,19 @@ double NewtonIntegrator::potential(const Cloth& cloth, const std::vector<Vec3>& 
     dampedDisplacement_.noalias() = dampingHessian_ * displacement_;
     damping += displacement_.dot(dampedDisplacement_);
   }
-  return inertia / (2.0 * h * h) + elastic.membraneEnergy + elastic.bendingEnergy + grab - external + damping / (2.0 * h);
+  return inertia / (2.0 * h * h) + elastic.membraneEnergy + elastic.bendingEnergy + grab - external + damping / (2.0 * h) +
+         heldEnergy(x, in, h);
+}
+
+double NewtonIntegrator::heldEnergy(const std::vector<Vec3>& x, const StepInputs& in, double h) const {
+  if (in.heldVertices == nullptr) return 0.0;
+  double energy = 0.0;
+  for (HeldVertex& held : *in.heldVertices) {
+    const Vec3 d = x[held.vertex] - x0_[held.vertex] - h * held.velocity;
+    // The weight was set by the first iteration's assembly (advance).
+    energy += d.dot(weft::holdWeight(held, [] { return 0.0; }) * d);
+  }
+  return energy / (2.0 * h * h);
 }
 
 void NewtonIntegrator::advance(Cloth& cloth, const StepInputs& in, StageProfile& profile, SolverStats& stats) {
@@ -60,7 +72,7 @@ void NewtonIntegrator::advance(Cloth& cloth, const StepInputs& in, StageProfile&
   }
 
   const double externalForceScale = flat(system_.externalForce).norm();
-  double lastChange = 0.0;
+  double lastChange = 0.0, firstChange = 0.0;
   int iteration = 0;
   for (; iteration < maxIterations_; ++iteration) {
     system_.matrix.setZero();
@@ -93,6 +105,17 @@ void NewtonIntegrator::advance(Cloth& cloth, const StepInputs& in, StageProfile&
       phi = inertia / (2.0 * h * h) + elastic.membraneEnergy + elastic.bendingEnergy + grab - external + damping / (2.0 * h);
       for (int i = 0; i < n; ++i) system_.matrix.addDiagonal(i, mesh.mass[i] * (1.0 / (h * h) + in.damping.mass / h));
       if (in.grab != nullptr) system_.matrix.addBlock(in.grab->vertex, in.grab->vertex, -grabForceJacobian(*in.grab));
+      if (in.heldVertices != nullptr) {
+        // Hessian W/h^2; a NormalSupport's weight from this (first) assembly's diagonal times h^2,
+        // the linearized integrator's diagonal in kg.
+        for (HeldVertex& held : *in.heldVertices) {
+          const Mat3 weight = weft::holdWeight(held, [&] { return h * h * system_.matrix.largestDiagonal(held.vertex); });
+          const Vec3 d = x[held.vertex] - x0_[held.vertex] - h * held.velocity;
+          gradient_.segment<3>(3 * held.vertex) += weight * d / (h * h);
+          phi += d.dot(weight * d) / (2.0 * h * h);
+          system_.matrix.addBlock(held.vertex, held.vertex, weight / (h * h));
+        }
+      }
       system_.rhs = -gradient_;
       system_.known.setZero(3 * n);  // pinned vertices already sit at their targets
       system_.matrix.constrainVertices(system_.pinnedVertices, system_.known, system_.rhs);
@@ -119,6 +142,7 @@ void NewtonIntegrator::advance(Cloth& cloth, const StepInputs& in, StageProfile&
     if (!accepted) break;  // no decrease along the step: x is as good as this Newton step gets
     x.swap(trial_);
     lastChange = alpha * step_.cwiseAbs().maxCoeff() / h;
+    if (iteration == 0) firstChange = lastChange;
     if (lastChange < tolerance_) {
       ++iteration;
       break;
@@ -126,11 +150,18 @@ void NewtonIntegrator::advance(Cloth& cloth, const StepInputs& in, StageProfile&
   }
   stats.newtonIterations += iteration;
   stats.lastNewtonResidual = lastChange;
+  stats.lastNewtonFirstChange = firstChange;
 
   StageTimer timer(profile, "update");
   for (int i = 0; i < n; ++i) {
     mesh.v[i] = (x[i] - x0_[i]) / h;
     mesh.x[i] = x[i];
+  }
+  // The impulse each held vertex received from its obstacle (the obstacle takes its opposite).
+  if (in.heldVertices != nullptr) {
+    for (HeldVertex& held : *in.heldVertices) {
+      held.reaction = weft::holdWeight(held, [] { return 0.0; }) * (held.velocity - mesh.v[held.vertex]);
+    }
   }
 }
 

@@ -10,7 +10,10 @@ namespace weft {
 // the damping matrix D = c_m M + beta H(x0). Each iteration solves with the definite Hessian and
 // backtracks along the step until Phi decreases enough (Armijo), so it converges from any start.
 // Given a BDF2 form (implicit_step.h), x0, v0 and h are its x^, v^ and h^: the same potential,
-// minimized for the BDF2 step.
+// minimized for the BDF2 step. Vertices held by obstacles (integrator.h HeldVertex) add their
+// term (heldEnergy), so contact and the cloth's stiffness meet inside the solve as in the
+// linearized integrator; left to the impulses, a ball's impact strained the cloth next to the
+// vertices it moved so far in one step that Newton stopped at its iteration cap, run after run.
 class NewtonIntegrator final : public Integrator {
  public:
   explicit NewtonIntegrator(const SolverSpec& spec)
@@ -23,6 +26,10 @@ class NewtonIntegrator final : public Integrator {
 
  private:
   double potential(const Cloth& cloth, const std::vector<Vec3>& x, const StepInputs& in, StageProfile& profile);
+  // The held vertices' share of Phi (integrator.h HeldVertex): each carries its weight W (kg)
+  // moving at the obstacle's velocity u, 1/(2h^2) (x - x0 - h u)^T W (x - x0 - h u), whose
+  // gradient W (v - u) / h is the linearized integrator's W (v - u) row, per unit of step.
+  double heldEnergy(const std::vector<Vec3>& x, const StepInputs& in, double h) const;
 
   ImplicitSystem system_;
   int maxIterations_;

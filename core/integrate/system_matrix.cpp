@@ -153,6 +153,11 @@ void SystemMatrix::addDiagonal(int i, double value) {
   for (int c = 0; c < 3; ++c) values[blockOffset(i, i, c) + c] += value;
 }
 
+double SystemMatrix::largestDiagonal(int i) const {
+  const double* values = matrix_.valuePtr();
+  return std::max({values[blockOffset(i, i, 0)], values[blockOffset(i, i, 1) + 1], values[blockOffset(i, i, 2) + 2]});
+}
+
 void SystemMatrix::constrainVertices(const std::vector<int>& vertices, const Eigen::VectorXd& knownValues,
                                      Eigen::VectorXd& rhs) {
   if (vertices.empty()) return;

@@ -43,6 +43,7 @@ class SystemMatrix {
   // Adds m to block (i, j). The block must be in the pattern.
   void addBlock(int i, int j, const Mat3& m);
   void addDiagonal(int i, double value);  // adds value * I to block (i, i)
+  double largestDiagonal(int i) const;     // the largest of block (i, i)'s three diagonal entries
   // Offset into valuePtr() of entry (3i + r, 3j + c) is blockOffset(i, j, c) + r.
   int blockOffset(int i, int j, int column) const;
 

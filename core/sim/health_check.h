@@ -21,8 +21,9 @@
 //    + 100 m/s, the speed nothing in the scene can give it;
 //  - contact: the contact stage left collisions unresolved in 5 steps out of the last 100;
 //  - linear solves: a solve hit its iteration bound or failed to factor in 3 steps in a row;
-//  - Newton: the step ended with a velocity change above max(1000 x tolerance, 1e-3 m/s) in 3
-//    steps in a row (it stopped at its iteration cap far from converged).
+//  - Newton: the step ended with a velocity change above max(1000 x tolerance, 1e-3 m/s) and
+//    above a tenth of its first iteration's in 3 steps in a row (it stopped at its iteration cap
+//    far from converged).
 // Strain, energy and speed cost an elastic evaluation, so they are checked every `frameSteps`
 // steps (once per output frame) and at the end; the others every step.
 #include <cstdint>

@@ -101,7 +101,7 @@ std::vector<std::string> World::stagesRun() const {
   if (!w.obstacles.empty()) stages.push_back("obstacles");
   if (w.contact->runs()) {
     stages.push_back("contact_start_pairs");
-    stages.push_back("contact_held");  // when the integrator holds vertices (linearized backward Euler)
+    stages.push_back("contact_held");  // when the integrator holds vertices (the implicit ones)
     stages.push_back("contact_proximity");
     stages.push_back("contact_ccd");
     stages.push_back("contact_impact_zones");  // only when pass 2 leaves collisions

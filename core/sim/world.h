@@ -33,6 +33,7 @@ struct SolverStats {
   double maxLinearResidual = 0.0;   // largest relative residual of any linear solve
   long long newtonIterations = 0;   // total Newton iterations since the start
   double lastNewtonResidual = 0.0;  // last Newton step's final max velocity change (m/s)
+  double lastNewtonFirstChange = 0.0;  // the same step's first iteration's max velocity change (m/s)
   long long linearSolveFailures = 0;  // solves that hit their iteration bound or failed to factor
   // BDF2 (integrate/bdf2.h): cloth steps taken as one backward Euler step because the two-step
   // history was invalid (the first step, a tear or edit, a contact response, held contacts, a new dt).
