@@ -63,6 +63,18 @@ int vertexAt(const ClothMesh& mesh, const Vec2& rest) {
   return kNone;
 }
 
+// Cuts a notch from the bottom border's middle, three cells up; returns its tip.
+int cutNotch(Cloth& cloth) {
+  int tip = vertexAt(cloth.mesh, Vec2(0.5, 0.0));
+  for (int k = 0; k < 3; ++k) {
+    TopologyChange change;
+    EXPECT_TRUE(tearThroughVertex(cloth.mesh, tip, Vec2(0, 1), TearGuards{}, cloth.material.areaDensity, change));
+    applyTopologyChange(cloth, change);
+    tip = change.crackEnds.at(0);
+  }
+  return tip;
+}
+
 // The most loaded vertex's only line runs 10 degrees from its edges (a sliver to cross) and every
 // neighbour is pinned (nothing to move onto the line): the mesh refuses it. The stage then tries
 // the next vertex in the same step instead of stalling (the old stage tore nothing that step, and
@@ -128,14 +140,7 @@ TEST(TearStage, ANotchRunsWhereAnIntactSheetHoldsWhenTipsNeedLessStrength) {
   const Scene scene = sheetScene(test::tearTable({1.0}, 1.0));
   const Cloth intact = buildCloth(scene.cloths[0], "test", 0);
   Cloth notched = intact;
-  // A notch from the bottom border's middle, three cells up.
-  int tip = vertexAt(notched.mesh, Vec2(0.5, 0.0));
-  for (int k = 0; k < 3; ++k) {
-    TopologyChange change;
-    ASSERT_TRUE(tearThroughVertex(notched.mesh, tip, Vec2(0, 1), TearGuards{}, notched.material.areaDensity, change));
-    applyTopologyChange(notched, change);
-    tip = change.crackEnds.at(0);
-  }
+  const int tip = cutNotch(notched);  // three cells up from the bottom border's middle
   Cloth loaded = intact;
   prestress(loaded, 0.05);
   const double zeta = largestSeparation(loaded);
@@ -200,14 +205,7 @@ TEST(TearStage, ACrackRunsUpToAClampsEdgeAndNotIntoTheJaws) {
   Cloth cloth = buildCloth(scene.cloths[0], "test", 0);
   ASSERT_EQ(cloth.pins.size(), 1u);
   ASSERT_EQ(cloth.pins[0].vertices.size(), 44u);  // four rows of eleven
-  // A notch from the bottom border's middle, three cells up.
-  int tip = vertexAt(cloth.mesh, Vec2(0.5, 0.0));
-  for (int k = 0; k < 3; ++k) {
-    TopologyChange change;
-    ASSERT_TRUE(tearThroughVertex(cloth.mesh, tip, Vec2(0, 1), TearGuards{}, cloth.material.areaDensity, change));
-    applyTopologyChange(cloth, change);
-    tip = change.crackEnds.at(0);
-  }
+  const int tip = cutNotch(cloth);  // three cells up from the bottom border's middle
   Cloth intact = buildCloth(sheetScene(test::tearTable({1.0}, 1.0)).cloths[0], "test", 0);
   prestress(intact, 0.05);
   const double zeta = largestSeparation(intact);
@@ -274,13 +272,7 @@ TEST(TearStage, NewCracksAreLookedForOnlyAtSampleSteps) {
 TEST(TearStage, BetweenSamplesARunningCrackRunsOnAndNothingNewStarts) {
   Scene scene = sheetScene(test::tearTable({1.0}, 1.0));
   Cloth notched = buildCloth(scene.cloths[0], "test", 0);
-  int tip = vertexAt(notched.mesh, Vec2(0.5, 0.0));
-  for (int k = 0; k < 3; ++k) {
-    TopologyChange change;
-    ASSERT_TRUE(tearThroughVertex(notched.mesh, tip, Vec2(0, 1), TearGuards{}, notched.material.areaDensity, change));
-    applyTopologyChange(notched, change);
-    tip = change.crackEnds.at(0);
-  }
+  const int tip = cutNotch(notched);  // three cells up from the bottom border's middle
   Cloth intact = buildCloth(scene.cloths[0], "test", 0);
   prestress(intact, 0.05);
   const double zeta = largestSeparation(intact);
