@@ -36,10 +36,10 @@ double NewtonIntegrator::potential(const Cloth& cloth, const std::vector<Vec3>& 
 double NewtonIntegrator::heldEnergy(const std::vector<Vec3>& x, const StepInputs& in, double h) const {
   if (in.heldVertices == nullptr) return 0.0;
   double energy = 0.0;
-  for (HeldVertex& held : *in.heldVertices) {
+  for (std::size_t k = 0; k < in.heldVertices->size(); ++k) {
+    const HeldVertex& held = (*in.heldVertices)[k];
     const Vec3 d = x[held.vertex] - x0_[held.vertex] - h * held.velocity;
-    // The weight was set by the first iteration's assembly (advance).
-    energy += d.dot(weft::holdWeight(held, [] { return 0.0; }) * d);
+    energy += d.dot(heldWeights_[k] * d);
   }
   return energy / (2.0 * h * h);
 }
@@ -106,15 +106,22 @@ void NewtonIntegrator::advance(Cloth& cloth, const StepInputs& in, StageProfile&
       for (int i = 0; i < n; ++i) system_.matrix.addDiagonal(i, mesh.mass[i] * (1.0 / (h * h) + in.damping.mass / h));
       if (in.grab != nullptr) system_.matrix.addBlock(in.grab->vertex, in.grab->vertex, -grabForceJacobian(*in.grab));
       if (in.heldVertices != nullptr) {
-        // Hessian W/h^2; a NormalSupport's weight from this (first) assembly's diagonal times h^2,
-        // the linearized integrator's diagonal in kg.
-        for (HeldVertex& held : *in.heldVertices) {
-          const Mat3 weight = weft::holdWeight(held, [&] { return h * h * system_.matrix.largestDiagonal(held.vertex); });
-          const Vec3 d = x[held.vertex] - x0_[held.vertex] - h * held.velocity;
-          gradient_.segment<3>(3 * held.vertex) += weight * d / (h * h);
-          phi += d.dot(weight * d) / (2.0 * h * h);
-          system_.matrix.addBlock(held.vertex, held.vertex, weight / (h * h));
+        // The weights once per step, a NormalSupport's from the first assembly's diagonal times
+        // h^2 (the linearized integrator's diagonal, in kg); gradient W (x - x0 - h u)/h^2,
+        // Hessian W/h^2.
+        if (iteration == 0) {
+          heldWeights_.clear();
+          for (HeldVertex& held : *in.heldVertices) {
+            heldWeights_.push_back(weft::holdWeight(held, [&] { return h * h * system_.matrix.largestDiagonal(held.vertex); }));
+          }
         }
+        for (std::size_t k = 0; k < in.heldVertices->size(); ++k) {
+          const HeldVertex& held = (*in.heldVertices)[k];
+          const Vec3 d = x[held.vertex] - x0_[held.vertex] - h * held.velocity;
+          gradient_.segment<3>(3 * held.vertex) += heldWeights_[k] * d / (h * h);
+          system_.matrix.addBlock(held.vertex, held.vertex, heldWeights_[k] / (h * h));
+        }
+        phi += heldEnergy(x, in, h);
       }
       system_.rhs = -gradient_;
       system_.known.setZero(3 * n);  // pinned vertices already sit at their targets
@@ -158,9 +165,10 @@ void NewtonIntegrator::advance(Cloth& cloth, const StepInputs& in, StageProfile&
     mesh.x[i] = x[i];
   }
   // The impulse each held vertex received from its obstacle (the obstacle takes its opposite).
-  if (in.heldVertices != nullptr) {
-    for (HeldVertex& held : *in.heldVertices) {
-      held.reaction = weft::holdWeight(held, [] { return 0.0; }) * (held.velocity - mesh.v[held.vertex]);
+  if (in.heldVertices != nullptr && heldWeights_.size() == in.heldVertices->size()) {
+    for (std::size_t k = 0; k < in.heldVertices->size(); ++k) {
+      HeldVertex& held = (*in.heldVertices)[k];
+      held.reaction = heldWeights_[k] * (held.velocity - mesh.v[held.vertex]);
     }
   }
 }

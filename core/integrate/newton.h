@@ -39,6 +39,7 @@ class NewtonIntegrator final : public Integrator {
   Eigen::VectorXd displacement_, dampedDisplacement_;
   SystemMatrix::Sparse dampingHessian_;  // beta * H(x0) when stiffness damping is on
   Eigen::VectorXd gradient_, step_;
+  std::vector<Mat3> heldWeights_;  // per held vertex of this step, its weight W (kg), set by the first assembly
 };
 
 }  // namespace weft
