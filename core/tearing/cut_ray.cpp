@@ -92,6 +92,17 @@ std::optional<RayCut> planRayCut(const ClothMesh& mesh, const VertexFan& fan, co
       crossing.repair = true;
       return crossing;
     }
+    // Across, re-triangulating the vertex's fan too, when the new edges at the split point are
+    // long enough (neither a flip nor a split lengthens them).
+    const Vec2 a = t.rest[(k + 1) % 3], b = t.rest[(k + 2) % 3];
+    const Vec2 splitPoint = a + crossing.split.fraction * (b - a);
+    const double side = (b - a).norm();
+    if (std::min(crossing.split.fraction, 1.0 - crossing.split.fraction) * side >= guards.minEdgeLength &&
+        (splitPoint - t.rest[k]).norm() >= guards.minEdgeLength) {
+      crossing.repair = true;
+      crossing.repairAtVertex = true;
+      return crossing;
+    }
   }
   if (!beyondSnap) return follow(clockwiseNearer ? clockwise : counterClockwise);
   return std::nullopt;

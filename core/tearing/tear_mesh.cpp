@@ -8,6 +8,7 @@
 #include "tearing/cut_ray.h"
 #include "tearing/flip_edge.h"
 #include "tearing/move_vertex.h"
+#include "tearing/restore_quality.h"
 #include "tearing/separate_vertex.h"
 #include "tearing/split_edge.h"
 #include "tearing/vertex_fan.h"
@@ -37,36 +38,50 @@ void finish(const ClothMesh& mesh, TopologyChange& change) {
 }
 
 // A split whose neighbour piece is thin, then flips around the split point until every triangle
-// there keeps the guards. When they cannot, the mesh and the change are put back as they were
+// there keeps the guards; failing that (or straight away with `atVertex`, RayCut::repairAtVertex),
+// the guards restored over the split point's and the vertex's fans by flips and splits
+// (restore_quality.h). When they cannot be, the mesh and the change are put back as they were
 // (kept whole: the repair is rare, and a copy is simpler than undoing flips) and kNone is returned;
 // else the cut edge from the vertex to the split point.
 int splitAndRepair(ClothMesh& mesh, int vertex, const EdgeSplitPoint& at, const TearGuards& guards, double areaDensity,
-                   std::vector<int> keepEdges, TopologyChange& change) {
+                   std::vector<int> keepEdges, bool atVertex, TopologyChange& change) {
   const ClothMesh meshBefore = mesh;
   const TopologyChange changeBefore = change;
-  const int splitPoint = splitEdge(mesh, at, areaDensity, change);
-  const int cutEdge = edgeJoining(mesh, at.triangle, vertex, splitPoint);
-  const VertexFan around = walkFan(mesh, splitPoint, at.triangle);
-  TopologyChange flips;
-  keepEdges.push_back(cutEdge);
-  improveByFlips(mesh, around.triangles, keepEdges, areaDensity, flips);
-  bool sound = true;
-  for (int t : flips.changedTriangles) sound = sound && smallestRestAngle(mesh.tris[t]) >= degToRad(guards.minAngleDeg);
-  for (int t : walkFan(mesh, splitPoint, mesh.edges[cutEdge].tri[0]).triangles) {
-    sound = sound && smallestRestAngle(mesh.tris[t]) >= degToRad(guards.minAngleDeg);
-  }
-  if (!sound) {
+  if (!atVertex) {
+    const int splitPoint = splitEdge(mesh, at, areaDensity, change);
+    const int cutEdge = edgeJoining(mesh, at.triangle, vertex, splitPoint);
+    const VertexFan around = walkFan(mesh, splitPoint, at.triangle);
+    TopologyChange flips;
+    std::vector<int> keep = keepEdges;
+    keep.push_back(cutEdge);
+    improveByFlips(mesh, around.triangles, keep, areaDensity, flips);
+    bool sound = true;
+    for (int t : flips.changedTriangles) sound = sound && smallestRestAngle(mesh.tris[t]) >= degToRad(guards.minAngleDeg);
+    for (int t : walkFan(mesh, splitPoint, mesh.edges[cutEdge].tri[0]).triangles) {
+      sound = sound && smallestRestAngle(mesh.tris[t]) >= degToRad(guards.minAngleDeg);
+    }
+    if (sound) {
+      // Appended, not merged: the lists are sorted once the tear is done (finish).
+      for (auto [into, from] : {std::pair{&change.changedTriangles, &flips.changedTriangles},
+                                std::pair{&change.changedEdges, &flips.changedEdges},
+                                std::pair{&change.massChangedVertices, &flips.massChangedVertices}}) {
+        into->insert(into->end(), from->begin(), from->end());
+      }
+      return cutEdge;
+    }
     mesh = meshBefore;
     change = changeBefore;
-    return kNone;
   }
-  // Appended, not merged: the lists are sorted once the tear is done (finish).
-  for (auto [into, from] : {std::pair{&change.changedTriangles, &flips.changedTriangles},
-                            std::pair{&change.changedEdges, &flips.changedEdges},
-                            std::pair{&change.massChangedVertices, &flips.massChangedVertices}}) {
-    into->insert(into->end(), from->begin(), from->end());
-  }
-  return cutEdge;
+  const int splitPoint = splitEdge(mesh, at, areaDensity, change);
+  const int cutEdge = edgeJoining(mesh, at.triangle, vertex, splitPoint);
+  std::vector<int> region = walkFan(mesh, splitPoint, at.triangle).triangles;
+  const std::vector<int> fan = walkFan(mesh, vertex, at.triangle).triangles;
+  region.insert(region.end(), fan.begin(), fan.end());
+  keepEdges.push_back(cutEdge);
+  if (restoreQuality(mesh, region, keepEdges, guards, areaDensity, change)) return cutEdge;
+  mesh = meshBefore;
+  change = changeBefore;
+  return kNone;
 }
 
 // Whether the far end of a planned cut is pinned: the spoke's other end (a vertex that moves onto
@@ -126,7 +141,8 @@ bool tearThroughVertex(ClothMesh& mesh, int vertex, const Vec2& direction, const
       const int splitPoint = splitEdge(mesh, cut->split, areaDensity, change);
       cutEdge = edgeJoining(mesh, cut->split.triangle, vertex, splitPoint);
     } else {
-      cutEdge = splitAndRepair(mesh, vertex, cut->split, guards, areaDensity, cutEdges, change);
+      cutEdge = splitAndRepair(mesh, vertex, cut->split, guards, areaDensity, cutEdges, cut->repairAtVertex, change);
+
       if (cutEdge == kNone) {
         if (before && !cutEdges.empty()) mesh = std::move(*before);
         return false;

@@ -9,7 +9,8 @@
 //      must point into its fan. A ray follows an existing edge that lies on the line, crosses the
 //      triangle it enters (splitting that triangle's opposite side where the ray leaves it) when
 //      the pieces pass the guards, or else moves the nearer end of that side onto the line and
-//      follows its edge (move_vertex.h), so the crack stays on the line the physics chose. Each
+//      follows its edge (move_vertex.h), or else crosses and re-triangulates around the crossing
+//      by flips and splits (restore_quality.h), so the crack stays on the line the physics chose. Each
 //      ray is planned on the mesh as the rays before it left it and carried out at once.
 //      A ray from a pinned vertex whose far end is pinned too is refused: the clamp holds both.
 //   2. Open the cut edges and separate every vertex left with two fans (separate_vertex.h): the

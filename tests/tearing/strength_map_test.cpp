@@ -164,13 +164,16 @@ TEST(StrengthMap, ASheetWithAWeakPaintedBandUnderUniformPullTearsInsideTheBand) 
 
 // The map is read in material space: turning the weft (an anisotropic table) and refining the mesh
 // leave the torn path where the painted line is, within one edge length of the coarse mesh. The
-// paths are compared in [0.15, 0.85]^2: with the weft turned the free corners of the sheet (not
-// clamped) also tear, along the warp, up to (0.1, 0.88) by 0.17 s: the fabric's own tears, the
-// same with or without a map, and not the claim here.
+// paths are compared in [0.15, 0.85]^2, clear of the clamps.
 TEST(StrengthMap, TheMapIsReadInMaterialSpaceWhateverTheWeftAndTheMesh) {
-  const TearTable table = test::tearTable({1.0, 3.0, 3.0, 3.0}, 150.0);  // weak along the warp only
-  const TearStrengthMap map = bandMap(0.3, 0.015, 0.1);
-  // 0.17 s: the band has torn through; later the clamps and the free corners tear too.
+  // Weak along the warp only: 450 N/m, and the band a thirtieth of it (15 N/m along the warp, 45
+  // across). The fabric outside the band does not tear within the window, so the paths compared
+  // are the band's alone. (With 150 N/m and the band at a tenth, the same band strength, the free
+  // corners tear along the warp too, and since the surgery no longer refuses lines
+  // (restore_quality.h) those cracks reach the window on the 33^2 mesh: a path 0.51 m away.)
+  const TearTable table = test::tearTable({1.0, 3.0, 3.0, 3.0}, 450.0);
+  const TearStrengthMap map = bandMap(0.3, 0.015, 15.0 / 450.0);
+  // 0.17 s: the band has torn through; later the clamps tear too.
   const BandRun coarse = runBandSheet(24, table, 0.0, &map, 40, 0.15);
   const BandRun turned = runBandSheet(24, table, 35.0, &map, 40, 0.15);
   const BandRun fine = runBandSheet(33, table, 35.0, &map, 40, 0.15);

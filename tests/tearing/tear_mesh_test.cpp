@@ -4,12 +4,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <random>
 
 #include "mesh/grid.h"
 #include "mesh/mesh_check.h"
 #include "support/mesh_helpers.h"
 #include "support/tear_checks.h"
+#include "tearing/restore_quality.h"
 #include "tearing/vertex_fan.h"
 
 namespace weft {
@@ -251,6 +253,34 @@ TEST(TearMesh, AMoveKeepsMassMomentumRestAreaAndTheDeformation) {
       EXPECT_LE((mesh.x[v] - (map * Vec3(rest.x(), rest.y(), 0.0) + shift)).norm(), 1e-6) << deg;  // 1e-6: the nudge
     }
     EXPECT_TRUE(valid(mesh));
+  }
+}
+
+// A ray whose crossing leaves a thin triangle beyond the crossed side that flips there cannot
+// mend, where no neighbour may move onto the line (all eight pinned: a crack between clamps), used
+// to be refused, and a crack tip there stalled for good (measured on the ball scene at 32^2: its
+// flap's right tip, refused in every later step). It now crosses on its line and the guards are
+// restored by flips and splits over the vertex's and the crossing's fans (restore_quality.h):
+// every triangle keeps 15 degrees and 1 mm, mass and momentum are kept, nothing pinned moves.
+TEST(TearMesh, AThinCrossingWhereNoVertexMayMoveIsReTriangulatedNotRefused) {
+  for (const double deg : {31.0, 35.0, 39.0, 52.0}) {
+    ClothMesh mesh = grid(5);
+    const std::vector<int> ring{6, 7, 8, 11, 13, 16, 17, 18};
+    for (int v : ring) mesh.pinned[v] = 1;
+    const ClothMesh start = mesh;
+    const Totals before(mesh);
+    TopologyChange change;
+    ASSERT_TRUE(tearThroughVertex(mesh, 12, atDegrees(deg), TearGuards{}, kDensity, change)) << deg;
+    EXPECT_TRUE(change.movedVertices.empty()) << deg;
+    EXPECT_GT(mesh.vertexCount(), start.vertexCount() + 2) << deg << " degrees: a split beyond the crossing";
+    expectTornEdgesOnTheLine(mesh, Vec2(0.5, 0.5), atDegrees(deg));
+    for (const Triangle& t : mesh.tris) {
+      EXPECT_TRUE(keepsGuards(t, TearGuards{})) << deg << " degrees: smallest angle "
+                                                << smallestRestAngle(t) * 180.0 / std::numbers::pi;
+    }
+    expectKept(before, mesh);
+    for (int v : ring) EXPECT_EQ(mesh.x[v], start.x[v]) << deg;
+    EXPECT_TRUE(valid(mesh)) << deg;
   }
 }
 

@@ -333,12 +333,12 @@ namespace {
 
 // Thesis §4.2, Figure 4.6: Cloth 4's table is weakest for vertical lines, but only 1.3 times weaker
 // than for horizontal ones (5 against 6.46). In the default mode the shipped scene (royal-target,
-// as stiff along the weft as along the warp) tears mostly vertically at its 40^2 (share of the
-// torn length within 22.5 deg of vertical after 0.5 s: 0.56 / 0.77 / 0.84 at 32^2 / 40^2 / 48^2;
-// at 32^2 the tips of the ball's slit turn into horizontal cuts and cut a flap out). In the
+// as stiff along the weft as along the warp, and a 15 cm ball) tears in several vertical lines at
+// every resolution: share of the torn length within 22.5 deg of vertical after 0.5 s 0.84 / 0.92 /
+// 0.96 / 1.00 at 32^2 / 40^2 / 48^2 / 64^2 (with the 8 cm ball of the other Table 4.1 scenes 0.57 /
+// 0.67 / 0.84 / 0.57: the small ball's hoop stress picks the direction; docs/tearing.md). In the
 // one-pass mode the denim of the other Table 4.1 scenes, five times stiffer along the warp
-// (c22 / c11 = 4.9), tears about as much across as along (0.52 at 32^2): why the scene uses
-// royal-target. (In the default, denim tears mostly vertically too: 0.67 / 0.76 / 0.87.)
+// (c22 / c11 = 4.9), tears more across than along (0.32 at 32^2): why the scene uses royal-target.
 double verticalShareOfCloth4(const std::string& material, int resolution, bool onePass) {
   const std::string scene = std::string(WEFT_SOURCE_DIR) + "/presets/scenes/ball-into-sheet-table4.1-cloth4.json";
   const std::string grid = std::to_string(resolution);
@@ -352,11 +352,14 @@ double verticalShareOfCloth4(const std::string& material, int resolution, bool o
 }
 
 TEST(Tearing, Table41Cloth4TearsMostlyVerticallyOnAnEvenFabricAndNotOnDenimInTheOnePassMode) {
-  const double even = verticalShareOfCloth4("royal-target", 40, false);
+  for (int resolution : {32, 40, 48}) {
+    const double even = verticalShareOfCloth4("royal-target", resolution, false);
+    std::printf("[ cloth 4 ] share of the torn length within 22.5 deg of vertical: royal-target %.2f (default, %d^2)\n",
+                even, resolution);
+    EXPECT_GE(even, 0.7) << resolution;
+  }
   const double denim = verticalShareOfCloth4("11oz-black-denim", 32, true);
-  std::printf("[ cloth 4 ] share of the torn length within 22.5 deg of vertical: royal-target %.2f (default, "
-              "40^2), denim %.2f (one-pass, 32^2)\n", even, denim);
-  EXPECT_GE(even, 0.7);
+  std::printf("[ cloth 4 ] denim %.2f (one-pass, 32^2)\n", denim);
   EXPECT_LT(denim, 0.6);
 }
 
