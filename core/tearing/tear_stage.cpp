@@ -77,7 +77,8 @@ double restLength(const ClothMesh& mesh, int e) {
 // overshoot); a tear at such an end continues it.
 struct CrackFronts {
   std::unordered_map<int, int> frontAt;  // crack end made this step -> its front
-  std::vector<double> advanced;          // per front: how far each of its tips has run (m)
+  std::vector<double> advanced;          // per front: how far the crack has run (m): the torn length
+                                         // of all its tips (two for a crack through an interior vertex)
 
   int frontOf(int vertex, const std::unordered_map<int, double>& carried) {
     const auto found = frontAt.find(vertex);
