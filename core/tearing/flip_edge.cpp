@@ -1,6 +1,7 @@
 #include "tearing/flip_edge.h"
 
 #include <algorithm>
+#include <utility>
 #include <array>
 #include <cmath>
 
@@ -117,6 +118,14 @@ bool improveByFlips(ClothMesh& mesh, std::vector<int> triangles, const std::vect
     if (!flipped) break;
   }
   return any;
+}
+
+void appendFlips(TopologyChange& into, const TopologyChange& flips) {
+  for (auto [to, from] : {std::pair{&into.changedTriangles, &flips.changedTriangles},
+                          std::pair{&into.changedEdges, &flips.changedEdges},
+                          std::pair{&into.massChangedVertices, &flips.massChangedVertices}}) {
+    to->insert(to->end(), from->begin(), from->end());
+  }
 }
 
 }  // namespace weft

@@ -22,4 +22,8 @@ bool flipIfBetter(ClothMesh& mesh, int edge, double areaDensity, TopologyChange&
 bool improveByFlips(ClothMesh& mesh, std::vector<int> triangles, const std::vector<int>& keep, double areaDensity,
                     TopologyChange& change, int maxPasses = 8);
 
+// Appends what flips changed (their triangles, edges and lumped masses: all a flip changes) to a
+// tear's change, unsorted: the tear sorts its lists once it is done.
+void appendFlips(TopologyChange& into, const TopologyChange& flips);
+
 }  // namespace weft

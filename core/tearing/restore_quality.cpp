@@ -13,14 +13,6 @@ namespace {
 // crack but a mesh the tear should not cross here (the tear falls back to its next line).
 constexpr int kMaxSplits = 4;
 
-void appendChange(TopologyChange& into, const TopologyChange& from) {
-  for (auto [to, list] : {std::pair{&into.changedTriangles, &from.changedTriangles},
-                          std::pair{&into.changedEdges, &from.changedEdges},
-                          std::pair{&into.massChangedVertices, &from.massChangedVertices}}) {
-    to->insert(to->end(), list->begin(), list->end());
-  }
-}
-
 void sortUnique(std::vector<int>& ids) {
   std::sort(ids.begin(), ids.end());
   ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
@@ -43,7 +35,7 @@ bool restoreQuality(ClothMesh& mesh, std::vector<int> region, const std::vector<
   for (int splits = 0;; ++splits) {
     TopologyChange flips;
     improveByFlips(mesh, region, keep, areaDensity, flips);
-    appendChange(change, flips);
+    appendFlips(change, flips);
     region.insert(region.end(), flips.changedTriangles.begin(), flips.changedTriangles.end());
     sortUnique(region);
     // The thinnest triangle that fails the guards (the lowest id on a tie: deterministic).

@@ -47,37 +47,34 @@ int splitAndRepair(ClothMesh& mesh, int vertex, const EdgeSplitPoint& at, const 
                    std::vector<int> keepEdges, bool atVertex, TopologyChange& change) {
   const ClothMesh meshBefore = mesh;
   const TopologyChange changeBefore = change;
+  // The split on the ray, and the cut edge from the vertex to it (kept by every repair).
+  const auto split = [&](int& splitPoint) {
+    splitPoint = splitEdge(mesh, at, areaDensity, change);
+    keepEdges.push_back(edgeJoining(mesh, at.triangle, vertex, splitPoint));
+    return keepEdges.back();
+  };
+  int splitPoint = kNone;
   if (!atVertex) {
-    const int splitPoint = splitEdge(mesh, at, areaDensity, change);
-    const int cutEdge = edgeJoining(mesh, at.triangle, vertex, splitPoint);
-    const VertexFan around = walkFan(mesh, splitPoint, at.triangle);
+    const int cutEdge = split(splitPoint);
     TopologyChange flips;
-    std::vector<int> keep = keepEdges;
-    keep.push_back(cutEdge);
-    improveByFlips(mesh, around.triangles, keep, areaDensity, flips);
+    improveByFlips(mesh, walkFan(mesh, splitPoint, at.triangle).triangles, keepEdges, areaDensity, flips);
     bool sound = true;
     for (int t : flips.changedTriangles) sound = sound && smallestRestAngle(mesh.tris[t]) >= degToRad(guards.minAngleDeg);
     for (int t : walkFan(mesh, splitPoint, mesh.edges[cutEdge].tri[0]).triangles) {
       sound = sound && smallestRestAngle(mesh.tris[t]) >= degToRad(guards.minAngleDeg);
     }
     if (sound) {
-      // Appended, not merged: the lists are sorted once the tear is done (finish).
-      for (auto [into, from] : {std::pair{&change.changedTriangles, &flips.changedTriangles},
-                                std::pair{&change.changedEdges, &flips.changedEdges},
-                                std::pair{&change.massChangedVertices, &flips.massChangedVertices}}) {
-        into->insert(into->end(), from->begin(), from->end());
-      }
+      appendFlips(change, flips);
       return cutEdge;
     }
     mesh = meshBefore;
     change = changeBefore;
+    keepEdges.pop_back();
   }
-  const int splitPoint = splitEdge(mesh, at, areaDensity, change);
-  const int cutEdge = edgeJoining(mesh, at.triangle, vertex, splitPoint);
+  const int cutEdge = split(splitPoint);
   std::vector<int> region = walkFan(mesh, splitPoint, at.triangle).triangles;
   const std::vector<int> fan = walkFan(mesh, vertex, at.triangle).triangles;
   region.insert(region.end(), fan.begin(), fan.end());
-  keepEdges.push_back(cutEdge);
   if (restoreQuality(mesh, region, keepEdges, guards, areaDensity, change)) return cutEdge;
   mesh = meshBefore;
   change = changeBefore;
@@ -142,7 +139,6 @@ bool tearThroughVertex(ClothMesh& mesh, int vertex, const Vec2& direction, const
       cutEdge = edgeJoining(mesh, cut->split.triangle, vertex, splitPoint);
     } else {
       cutEdge = splitAndRepair(mesh, vertex, cut->split, guards, areaDensity, cutEdges, cut->repairAtVertex, change);
-
       if (cutEdge == kNone) {
         if (before && !cutEdges.empty()) mesh = std::move(*before);
         return false;

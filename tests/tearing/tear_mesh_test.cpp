@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <random>
 
 #include "mesh/grid.h"
@@ -276,7 +275,7 @@ TEST(TearMesh, AThinCrossingWhereNoVertexMayMoveIsReTriangulatedNotRefused) {
     expectTornEdgesOnTheLine(mesh, Vec2(0.5, 0.5), atDegrees(deg));
     for (const Triangle& t : mesh.tris) {
       EXPECT_TRUE(keepsGuards(t, TearGuards{})) << deg << " degrees: smallest angle "
-                                                << smallestRestAngle(t) * 180.0 / std::numbers::pi;
+                                                << smallestRestAngle(t) * 180.0 / kPi;
     }
     expectKept(before, mesh);
     for (int v : ring) EXPECT_EQ(mesh.x[v], start.x[v]) << deg;
