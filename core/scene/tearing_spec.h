@@ -11,7 +11,7 @@ struct TearingSpec {
   int denseDirections = 180;     // dense: samples per half turn (per fan for a border vertex)
   bool skipByBound = true;       // skip vertices whose separation-strength bound cannot reach the table
   // Crack growth within a step (tear_stage.h). true: a crack that tears runs on from its new tips
-  // within the step, its torn length growing at most crackSpeed * dt per step (shared by its tips),
+  // within the step, each tip running at most crackSpeed * dt per step,
   // so a crack's growth per second does not depend on the element size, and tips read the material ahead of them
   // (crackTipLength); false: the thesis' one pass per step (maxTearsPerStep lines), the next
   // step's dynamics relaxing the stress. The default (with stressLength 0.065 and incubation 0.06)

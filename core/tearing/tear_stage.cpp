@@ -72,13 +72,16 @@ double restLength(const ClothMesh& mesh, int e) {
   return (t.rest[cornerOf(t, edge.v[0])] - t.rest[cornerOf(t, edge.v[1])]).norm();
 }
 
-// How far each crack of this step has run: a tear at a vertex that is not the end of a crack made
-// this step starts a new front (or continues, from an earlier step, a tip with its carried
-// overshoot); a tear at such an end continues it.
+// How far each crack tip of this step has run: a tear at a vertex that is not the end of a crack
+// made this step starts a new front (or continues, from an earlier step, a tip with its carried
+// overshoot); a tear at such an end continues it. A tear through an interior vertex opens two tips,
+// each its own front from there on with half the torn length run: crack_speed is a tip's speed, as
+// a crack in a sheet runs from each of its ends at once, so a crack started inside the sheet grows
+// twice as fast as one from the border (a shared budget made each of its tips half as fast, and how
+// far a crack got then hung on where its first tear fell).
 struct CrackFronts {
   std::unordered_map<int, int> frontAt;  // crack end made this step -> its front
-  std::vector<double> advanced;          // per front: how far the crack has run (m): the torn length
-                                         // of all its tips (two for a crack through an interior vertex)
+  std::vector<double> advanced;          // per front: how far its tip has run (m)
 
   int frontOf(int vertex, const std::unordered_map<int, double>& carried) {
     const auto found = frontAt.find(vertex);
@@ -86,6 +89,17 @@ struct CrackFronts {
     const auto carry = carried.find(vertex);
     advanced.push_back(carry != carried.end() ? carry->second : 0.0);
     return static_cast<int>(advanced.size()) - 1;
+  }
+
+  // A tear at `front`'s tip of `tornLength` (m) that left `ends`: each end runs on from the tip's
+  // distance plus its share of the torn length, the first on the tip's front, others on new ones.
+  void advance(int front, double tornLength, const std::vector<int>& ends) {
+    const double run = advanced[front] + tornLength / static_cast<double>(std::max<std::size_t>(1, ends.size()));
+    advanced[front] = run;
+    for (std::size_t k = 0; k < ends.size(); ++k) {
+      if (k > 0) advanced.push_back(run);
+      frontAt[ends[k]] = k > 0 ? static_cast<int>(advanced.size()) - 1 : front;
+    }
   }
 };
 
@@ -316,11 +330,8 @@ TopologyChange TearStage::tearCloth(Cloth& cloth, int clothIndex, const Membrane
     // Each tip of the crack advanced by its share of the torn length (an interior tear opens two).
     double tornLength = 0.0;
     for (int e : change.tornEdges) tornLength += 0.5 * restLength(cloth.mesh, e);
-    fronts.advanced[front] += tornLength / std::max<std::size_t>(1, change.crackEnds.size());
-    for (int end : change.crackEnds) {
-      fronts.frontAt[end] = front;
-      if (spec_.propagate) running.push_back(end);
-    }
+    fronts.advance(front, tornLength, change.crackEnds);
+    if (spec_.propagate) running.insert(running.end(), change.crackEnds.begin(), change.crackEnds.end());
     surgeryTimer.reset();
 
     // 3. The stress after the tear: the changed triangles at the current positions, then (with

@@ -7,10 +7,9 @@
 //      then the next vertex (no stall: a refused line never stops the cloth from tearing);
 //   3. relax (with `propagate`): the stress around the new crack ends relaxed locally
 //      (crack_relaxation.h), so the next search sees the stress the crack shed onto its tip.
-// A crack therefore grows as far within a step as its tips' omega stays above 1, its torn length up
-// to crack_speed * dt (shared by its tips: tear_stage.cpp's CrackFronts counts a crack's length, so
-// a crack through an interior vertex runs each of its two tips about half as fast as one from the
-// border): its speed is a material length per second, not one element per step,
+// A crack therefore grows as far within a step as its tips' omega stays above 1, each tip up to
+// crack_speed * dt (a crack through an interior vertex has two, each with its own budget:
+// tear_stage.cpp's CrackFronts): its speed is a material length per second, not one element per step,
 // so crack growth does not depend on the mesh's resolution. Without `propagate` the stage tears
 // the thesis' way: up to tears_per_step lines per step from one stress evaluation, the next step's
 // dynamics relaxing the rest (its §3.2).

@@ -305,5 +305,59 @@ TEST(TearStage, BetweenSamplesARunningCrackRunsOnAndNothingNewStarts) {
   }
 }
 
+// Crack speed is a tip's: a crack started through an interior vertex runs from both its tips at
+// once, each up to crack_speed * dt a step (the speed a crack from the border runs its one tip
+// at). The sheet is stretched across its vertical lines, most at its centre, so a crack starts
+// there, vertically, and its tips then run on through cloth at 60-70% of its strength (a tip reads
+// about twice the far field: the run-on ratio 0.5 is passed). Each tip may run 0.25 m in the step:
+// two and a half cells, so it tears three (its third starts within the budget), 0.3 m each way.
+// (With one budget shared by the two tips, 0.2 m each way.)
+TEST(TearStage, EachTipOfACrackStartedInsideTheSheetRunsAtTheCrackSpeed) {
+  const auto stretchAcross = [](Cloth& cloth, double bump) {
+    const Vec2 centre(0.5, 0.5);
+    for (const Triangle& t : cloth.mesh.tris) {
+      for (int k = 0; k < 3; ++k) {
+        const Vec2 r = t.rest[k];
+        const Vec2 d = r - centre;
+        const double x = 1.05 * r.x() + bump * std::exp(-d.squaredNorm() / 0.02) * d.x();
+        cloth.mesh.x[t.v[k]] = Vec3(x, r.y(), 0.0);
+      }
+    }
+  };
+  Cloth uniform = buildCloth(sheetScene(test::tearTable({1.0}, 1.0)).cloths[0], "test", 0);
+  Cloth bumped = uniform;
+  stretchAcross(uniform, 0.0);
+  stretchAcross(bumped, 0.03);
+  const double farField = largestSeparation(uniform), centre = largestSeparation(bumped);
+  ASSERT_GT(farField, 10.0);
+  const TearTable table = test::tearTable({1.0}, centre / 1.2);  // the centre at 120% of its strength
+  ASSERT_GT(farField / weakestStrength(table), 0.3);  // a tip at twice the far field reads at least 0.6
+  Scene scene = sheetScene(table);
+  scene.tearing.propagate = true;
+  scene.tearing.crackSpeed = 0.25 / kDt;
+  bumped.material.tearTable = table;
+
+  TearStage stage(scene);
+  std::vector<Cloth> cloths{bumped};
+  StageProfile profile;
+  stage.run(cloths, 0.0, kDt, profile);
+  ASSERT_FALSE(stage.log().empty());
+  EXPECT_NEAR(stage.log()[0].restPosition.x(), 0.5, 1e-9);
+  EXPECT_NEAR(stage.log()[0].restPosition.y(), 0.5, 1e-9);
+  double lowest = 1.0, highest = 0.0;
+  for (const Edge& edge : cloths[0].mesh.edges) {
+    if (!edge.torn) continue;
+    const Triangle& t = cloths[0].mesh.tris[edge.tri[0]];
+    for (int v : edge.v) {
+      const Vec2 rest = t.rest[cornerOf(t, v)];
+      EXPECT_NEAR(rest.x(), 0.5, 1e-5);  // one vertical crack (the surgery may move a vertex onto it)
+      lowest = std::min(lowest, rest.y());
+      highest = std::max(highest, rest.y());
+    }
+  }
+  EXPECT_NEAR(highest - 0.5, 0.3, 1e-6) << stage.log().size() << " tears";
+  EXPECT_NEAR(0.5 - lowest, 0.3, 1e-6) << stage.log().size() << " tears";
+}
+
 }  // namespace
 }  // namespace weft
