@@ -1,9 +1,10 @@
 #pragma once
 // Linear solvers for the implicit integrators, chosen by SolverSpec:
 //   - cg: our preconditioned conjugate gradient (preconditioned_cg.h) with the preconditioner named
-//     by SolverSpec::linearPreconditioner: a lagged sparse Cholesky factor of the strong couplings
-//     of A (the default) or of A itself (lagged_cholesky_preconditioner.h), one V-cycle of a
-//     smoothed-aggregation multigrid hierarchy (amg_preconditioner.h), or block Jacobi;
+//     by SolverSpec::linearPreconditioner: one V-cycle of a smoothed-aggregation multigrid
+//     hierarchy (amg_preconditioner.h; the default: linear cost per step, docs/solver.md), a
+//     lagged sparse Cholesky factor of the strong couplings of A or of A itself
+//     (lagged_cholesky_preconditioner.h), or block Jacobi;
 //   - cholmod: a sparse Cholesky factorization of A (sparse_cholesky.h) every solve.
 #include <memory>
 

@@ -132,7 +132,7 @@ struct SolverSpec {
   int newtonMaxIterations = 10;   // Newton and Bdf2Newton: iteration bound per (sub)step
   double newtonTolerance = 1e-6;  // Newton and Bdf2Newton: stop when the max velocity change of an iteration is below this (m/s)
   LinearSolverKind linearSolver = LinearSolverKind::ConjugateGradient;
-  PreconditionerKind linearPreconditioner = PreconditionerKind::LaggedCholesky;  // CG: see integrate/linear_solver.h
+  PreconditionerKind linearPreconditioner = PreconditionerKind::Amg;  // CG: see integrate/linear_solver.h
   double linearTolerance = 1e-6;  // CG: stop at |r| <= tolerance * max(|b|, |one step's external impulse| in b's units)
   int linearMaxIterations = 1000; // CG: iteration bound
   int threads = 1;                // worker threads: force assembly and the CG/multigrid row-wise products (results do not depend on it)

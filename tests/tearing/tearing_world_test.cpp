@@ -334,12 +334,13 @@ namespace {
 // Thesis §4.2, Figure 4.6: Cloth 4's table is weakest for vertical lines, but only 1.3 times weaker
 // than for horizontal ones (5 against 6.46). In the default mode the shipped scene (royal-target,
 // as stiff along the weft as along the warp, and a 15 cm ball) tears in several vertical lines:
-// share of the torn length within 22.5 deg of vertical after 0.5 s 0.86 / 1.00 / 0.92 / 1.00 / 1.00 /
-// 1.00 at 36^2 / 38^2 / 40^2 / 44^2 / 48^2 / 64^2 (with the 8 cm ball of the other Table 4.1
+// share of the torn length within 22.5 deg of vertical after 0.5 s 0.87 / 0.96 / 0.98 at 36^2 / 40^2 /
+// 48^2 (0.86 / 0.92 / 1.00 with the lagged Cholesky solver, 1.00 at 64^2) (with the 8 cm ball of the other Table 4.1
 // scenes, before per-tip crack budgets, 0.57 / 0.67 / 0.84 / 0.57 at 32^2 / 40^2 / 48^2 / 64^2:
 // the small ball's hoop stress picks the direction; docs/tearing.md). Coarser than 36^2 (3 cm
 // elements, the ball five across) the strip between the first two vertical cracks, carrying the
-// ball, also snaps across (0.71 / 0.70 / 0.72 at 30^2 / 32^2 / 34^2): not asserted there. In the
+// ball, may also snap across (0.77 at 32^2; 0.71 / 0.70 / 0.72 at 30^2 / 32^2 / 34^2 with the lagged
+// Cholesky solver): not asserted there. In the
 // one-pass mode the denim of the other Table 4.1 scenes, five times stiffer along the warp
 // (c22 / c11 = 4.9), tears more across than along (0.32 at 32^2): why the scene uses royal-target.
 double verticalShareOfCloth4(const std::string& material, int resolution, bool onePass) {
