@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "tearing/tear_table.h"
 #include "util/types.h"
 
 namespace weft {
@@ -78,6 +79,16 @@ struct StrengthScale {
   double of(double angle) const { return map == nullptr && region == nullptr ? factor : painted(angle); }
   // At most of(angle) for every angle.
   double lowest() const { return lowestFactor; }
+  // At most of(angle) * requiredStrength(table, alpha) for every alpha in [fromDeg, toDeg] (a half
+  // turn or more: every alpha), `table` the cloth's own. What the search's bounds divide by: with a
+  // region it bounds the blend's two tables each by its own weakest in the interval, where
+  // lowest() times the own table's weakest multiplies the smallest ratio of the two (at one
+  // direction) by the own table's weakest (at another) — on a bias panel weak at 45 degrees in a
+  // sheet weak at 90, a fifth of the real floor, and every fan of the sheet was then searched in
+  // full (tear_region.h's blend, linear in the region's share w: its least value for w in
+  // [0, w_max] is at an end).
+  double lowestStrengthBetween(const TearTable& table, double fromDeg, double toDeg) const;
+  double lowestStrength(const TearTable& table) const { return lowestStrengthBetween(table, 0.0, 180.0); }
 
   double factor = 1.0;
   const TearStrengthMap* map = nullptr;
@@ -87,6 +98,8 @@ struct StrengthScale {
   Vec2 point = Vec2::Zero();  // the vertex (material space)
   bool ray = false;
   double lowestFactor = 1.0;
+  double lowestUnblended = 1.0;  // factor times the map's lowest multiplier near the point (margin included)
+  double regionShare = 0.0;      // the region image's largest share of a line near the point (w_max)
 
  private:
   double painted(double angle) const;

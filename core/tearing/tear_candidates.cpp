@@ -93,7 +93,7 @@ TearCandidate bestDenseLine(const StressFan& fan, const TearTable& table, double
 TearCandidate bestLineAt(const StressFan& fan, const TearTable& table, double weftAngleRad,
                          const TearSearchSettings& settings, const StrengthScale& strengthScale,
                          TearSearchCounts& counts, double maxTurnRad) {
-  const double weakest = strengthScale.lowest() * weakestStrength(table);
+  const double weakest = strengthScale.lowestStrength(table);
   return settings.lines == CandidateLines::Thesis
              ? bestThesisLine(fan, table, weakest, weftAngleRad, strengthScale, counts)
              : bestDenseLine(fan, table, weakest, weftAngleRad, strengthScale, settings.denseDirections, maxTurnRad,
@@ -120,7 +120,7 @@ LinePiece boundPiece(const StressFan& fan, const TearTable& table, double weftAn
   const double alpha = angleFromWarpDeg(angle, weftAngleRad);
   piece.omega = lines.zeta / (scale.of(angle) * requiredStrength(table, alpha));
   const double halfWidthDeg = halfWidth * kRadToDeg;
-  piece.bound = lines.bound / (scale.lowest() * weakestStrengthBetween(table, alpha - halfWidthDeg, alpha + halfWidthDeg));
+  piece.bound = lines.bound / scale.lowestStrengthBetween(table, alpha - halfWidthDeg, alpha + halfWidthDeg);
   piece.edge = lines.edge;
   return piece;
 }
@@ -280,7 +280,6 @@ void findTearCandidates(const ClothMesh& mesh, const std::vector<TriangleCorners
   for (int t = 0; t < mesh.triangleCount(); ++t) {
     for (int v : mesh.tris[t].v) around[fill[v]++] = t;
   }
-  const double weakest = weakestStrength(table);
   auto fanOf = [&](int v, StressFan& fan) {
     stressFan(mesh, v, std::span<const int>(around.data() + rowStart[v], around.data() + rowStart[v + 1]), corners,
               triangleStress, fan);
@@ -314,7 +313,7 @@ void findTearCandidates(const ClothMesh& mesh, const std::vector<TriangleCorners
     if (settings.skipByBound) {
       fanOf(v, fan);
       // The map lowers a line's strength at most to its lowest multiplier near the vertex.
-      bound = separationStrengthBound(fan) * (1.0 + 1e-9) / (weakest * scaleOf(v, fan).lowest());
+      bound = separationStrengthBound(fan) * (1.0 + 1e-9) / scaleOf(v, fan).lowestStrength(table);
       if (bound < 1.0) {
         ++counts.skipped;
         continue;

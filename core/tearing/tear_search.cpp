@@ -387,7 +387,9 @@ StrengthScale TearSearch::scaleAt(const ClothMesh& mesh, int vertex, double fact
 
 double TearSearch::lowestMultiplierAt(const ClothMesh& mesh, int vertex) const {
   if (map_ == nullptr && region_ == nullptr) return 1.0;
-  return scaleAt(mesh, vertex, 1.0, false).lowest();  // the lowest does not depend on `ray`
+  // As a multiplier on the table's weakest strength (what omegaCeiling and the arc screen scale);
+  // the lowest does not depend on `ray`.
+  return scaleAt(mesh, vertex, 1.0, false).lowestStrength(*table_) / weakestStrength(*table_);
 }
 
 double TearSearch::omegaCeiling(double zetaBound, double scale, double lowestMultiplier) const {

@@ -84,6 +84,47 @@ TEST(TearRegion, TheFactorBlendsTheTwoTablesByTheImageAndItsBoundsHold) {
   }
 }
 
+// The floor the search's bounds divide by (StrengthScale::lowestStrengthBetween): at most the
+// strength of every line and ray at the point whose direction lies in the interval, with a map and
+// a region, at any weft, for a crack tip's factor too; and, for a bias panel in a sheet weak
+// elsewhere, well above lowest() times the own table's weakest (the old floor, which multiplied the
+// two tables' smallest ratio at one direction by the own table's weakest at another).
+TEST(TearRegion, TheSearchsStrengthFloorHoldsForEveryLineInItsIntervalAndIsTighter) {
+  const TearTable own = test::tearTable({1.0, 1.0, 0.3, 1.0}, 1000.0);   // weak at 90
+  const TearTable bias = test::tearTable({1.0, 0.2, 1.0, 0.2}, 1000.0);  // weak at 45 and 135
+  TearRegion region = bandRegion(0.5, 0.05, bias);
+  prepareStrengthMap(region.outside, Vec2(0, 0), Vec2(1, 1));
+  TearStrengthMap map = bandRegion(0.3, 0.1, own).outside;  // a second band, as a map: 1 outside, 0.5 inside
+  map.white = 0.5;
+  prepareStrengthMap(map, Vec2(0, 0), Vec2(1, 1));
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  int tighter = 0, pointsInBand = 0;
+  for (int k = 0; k < 400; ++k) {
+    const Vec2 p(unit(rng), unit(rng));
+    const double weft = 2.0 * std::numbers::pi * unit(rng);
+    const double factor = k % 2 == 0 ? 1.0 : 0.5;
+    for (bool ray : {false, true}) {
+      const StrengthScale scale(factor, &map, &region, &own, weft, p, ray);
+      const double from = 180.0 * unit(rng) - 20.0, width = 60.0 * unit(rng);
+      const double floor = scale.lowestStrengthBetween(own, from, from + width);
+      for (int j = 0; j <= 40; ++j) {
+        const double alpha = from + width * j / 40.0;
+        // The line whose angle from the warp is alpha (angleFromWarpDeg's inverse).
+        const double angle = weft + (90.0 - alpha) * std::numbers::pi / 180.0;
+        EXPECT_LE(floor, scale.of(angle) * requiredStrength(own, angleFromWarpDeg(angle, weft)) * (1.0 + 1e-12))
+            << p.transpose() << " alpha " << alpha;
+      }
+      const double whole = scale.lowestStrength(own);
+      EXPECT_GE(whole, scale.lowest() * weakestStrength(own) * (1.0 - 1e-12));
+      if (whole > 1.5 * scale.lowest() * weakestStrength(own)) ++tighter;
+      pointsInBand += std::abs(p.y() - 0.5) < 0.05;
+    }
+  }
+  EXPECT_GT(pointsInBand, 0);
+  EXPECT_GT(tighter, 50);  // near the band the old floor was 0.2 / 1.0 x 300 = 60 N/m; the blend's is 200
+}
+
 // Under a uniform stress the cloth's own table holds everywhere (omega 0.6); in the seam the lines
 // along it need 0.3 of that: the reference search finds only vertices in the seam, each with a line
 // along it at omega 2, the same with and without the bounds that skip vertices.
