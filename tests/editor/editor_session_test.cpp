@@ -166,6 +166,25 @@ TEST(EditorSession, AWeftEditAppliesLiveAndUndoRestoresIt) {
   EXPECT_DOUBLE_EQ(session.world().scene().cloths[0].weftAngleDeg, 30.0);
 }
 
+// The CG's preconditioner is picked in the Solver panel like the other solver settings: amg by
+// default, the lagged Cholesky (the accuracy and speed reference of docs/solver.md) one edit away,
+// applied to the running world and undone.
+TEST(EditorSession, APreconditionerEditAppliesLiveAndUndoRestoresTheDefault) {
+  test::TempDir dir;
+  EditorSession session(smallScene(dir, "hanging-sheet"));
+  ASSERT_EQ(session.scene().solver.linearPreconditioner, PreconditionerKind::Amg);
+  session.advanceFrame(kOutputFrame);
+  ASSERT_TRUE(session.edit(withPreconditioner(session.json(), "lagged_cholesky"), "preconditioner").accepted);
+  EXPECT_EQ(session.world().scene().solver.linearPreconditioner, PreconditionerKind::LaggedCholesky);
+  const long long steps = session.world().stepCount();
+  session.advanceFrame(kOutputFrame);
+  EXPECT_GT(session.world().stepCount(), steps);
+  EXPECT_TRUE(session.world().metrics().finite);
+  EXPECT_FALSE(session.edit(withPreconditioner(session.json(), "multigrid"), "preconditioner").accepted);
+  session.undo();
+  EXPECT_EQ(session.world().scene().solver.linearPreconditioner, PreconditionerKind::Amg);
+}
+
 TEST(EditorSession, AResolutionEditWaitsForAReset) {
   test::TempDir dir;
   EditorSession session(smallScene(dir, "hanging-sheet", 8));

@@ -319,6 +319,12 @@ json withLinearSolverType(const json& scene, const std::string& name) {
   return out;
 }
 
+json withPreconditioner(const json& scene, const std::string& name) {
+  json out = scene;
+  out["solver"]["linear_solver"]["preconditioner"] = name;
+  return out;
+}
+
 json withStage(const json& scene, const std::string& stage, bool runs) {
   json out = scene;
   out["stages"][stage] = runs;

@@ -75,6 +75,8 @@ nlohmann::json withLinearTolerance(const nlohmann::json& scene, double tolerance
 // By the names the scene file uses: "newton", "cg", "gravity"...
 nlohmann::json withIntegrator(const nlohmann::json& scene, const std::string& name);
 nlohmann::json withLinearSolverType(const nlohmann::json& scene, const std::string& name);
+// The CG's preconditioner: "amg" (the default), "lagged_cholesky", "lagged_exact_cholesky", "block_jacobi".
+nlohmann::json withPreconditioner(const nlohmann::json& scene, const std::string& name);
 nlohmann::json withStage(const nlohmann::json& scene, const std::string& stage, bool runs);
 
 }  // namespace weft::editor

@@ -21,6 +21,16 @@ const char* integratorName(IntegratorKind kind) {
   return "";
 }
 
+const char* preconditionerName(PreconditionerKind kind) {
+  switch (kind) {
+    case PreconditionerKind::Amg: return "amg";
+    case PreconditionerKind::LaggedCholesky: return "lagged_cholesky";
+    case PreconditionerKind::LaggedExactCholesky: return "lagged_exact_cholesky";
+    case PreconditionerKind::BlockJacobi: return "block_jacobi";
+  }
+  return "";
+}
+
 }  // namespace
 
 void drawSolverPanel(EditorSession& session, PanelState& state) {
@@ -61,6 +71,20 @@ void drawSolverPanel(EditorSession& session, PanelState& state) {
       }
     }
     ImGui::EndCombo();
+  }
+  if (solver.linearSolver == LinearSolverKind::ConjugateGradient) {
+    // The speed against accuracy of each: docs/solver.md (amg: linear cost; the lagged Cholesky
+    // factors grow as n^1.5; block Jacobi is cheap but slow to converge on stiff fabric).
+    const char* preconditioner = preconditionerName(solver.linearPreconditioner);
+    ImGui::SetNextItemWidth(170);
+    if (ImGui::BeginCombo("preconditioner", preconditioner)) {
+      for (const char* name : {"amg", "lagged_cholesky", "lagged_exact_cholesky", "block_jacobi"}) {
+        if (ImGui::Selectable(name, std::string(name) == preconditioner)) {
+          session.edit(withPreconditioner(session.json(), name), std::string("preconditioner ") + name);
+        }
+      }
+      ImGui::EndCombo();
+    }
   }
   double tolerance = solver.linearTolerance;
   if (numberField("CG tolerance", tolerance, "%.2g", 120)) {
