@@ -3,6 +3,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "scene/preconditioner_names.h"
+
 namespace weft::app {
 
 std::string integratorName(IntegratorKind kind) {
@@ -20,16 +22,6 @@ std::string linearSolverName(LinearSolverKind kind) {
   switch (kind) {
     case LinearSolverKind::ConjugateGradient: return "cg";
     case LinearSolverKind::Cholmod: return "cholmod";
-  }
-  return "unknown";
-}
-
-std::string preconditionerName(PreconditionerKind kind) {
-  switch (kind) {
-    case PreconditionerKind::BlockJacobi: return "block_jacobi";
-    case PreconditionerKind::LaggedCholesky: return "lagged_cholesky";
-    case PreconditionerKind::LaggedExactCholesky: return "lagged_exact_cholesky";
-    case PreconditionerKind::Amg: return "amg";
   }
   return "unknown";
 }

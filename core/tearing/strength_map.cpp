@@ -142,21 +142,20 @@ StrengthScale::StrengthScale(double factorIn, const TearStrengthMap* mapIn, cons
       weftAngleRad(weftAngleRadIn),
       point(pointIn),
       ray(rayIn),
-      lowestFactor(factorIn),
       lowestUnblended(factorIn) {
   // The margin covers the rounding of the bilinear means (float pixels summed in double).
   if (map != nullptr) lowestUnblended *= lowestStrengthMultiplierNear(*map, point);
   if (map != nullptr || region != nullptr) lowestUnblended *= 1.0 - 1e-9;
-  lowestFactor = lowestUnblended;
-  if (region != nullptr) {
-    lowestFactor *= lowestRegionFactorNear(*region, *own, point);
-    regionShare = 1.0 - std::clamp(lowestStrengthMultiplierNear(region->outside, point), 0.0, 1.0);
-  }
+  if (region != nullptr) regionShare = 1.0 - std::clamp(lowestStrengthMultiplierNear(region->outside, point), 0.0, 1.0);
+}
+
+double StrengthScale::lowest() const {
+  return region != nullptr ? lowestUnblended * lowestRegionFactorNear(*region, *own, point) : lowestUnblended;
 }
 
 double StrengthScale::lowestStrengthBetween(const TearTable& table, double fromDeg, double toDeg) const {
   const double ownWeakest = weakestStrengthBetween(table, fromDeg, toDeg);
-  if (region == nullptr) return lowestFactor * ownWeakest;
+  if (region == nullptr) return lowestUnblended * ownWeakest;
   // (1 - w) R_own + w R_region over the interval, w in [0, regionShare]: at least its value at
   // either end of w with each table at its own weakest (lowestUnblended's margin covers the
   // rounding here too).

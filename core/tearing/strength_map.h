@@ -70,15 +70,16 @@ double lowestStrengthMultiplierNear(const TearStrengthMap& map, const Vec2& poin
 // (tear_region.h), the region's blend of its table with the cloth's own. Implicit from a plain
 // factor, so the search's callers without either pass 1.0 or the propagation factor as before.
 struct StrengthScale {
-  StrengthScale(double factorIn) : factor(factorIn), lowestFactor(factorIn) {}  // NOLINT: implicit
+  StrengthScale(double factorIn) : factor(factorIn), lowestUnblended(factorIn) {}  // NOLINT: implicit
   StrengthScale(double factorIn, const TearStrengthMap* mapIn, const Vec2& pointIn, bool rayIn);
   // With a region too (`own`: the cloth's table, whose strengths the scale multiplies).
   StrengthScale(double factorIn, const TearStrengthMap* mapIn, const TearRegion* regionIn, const TearTable* ownIn,
                 double weftAngleRadIn, const Vec2& pointIn, bool rayIn);
   // The scale of the line (or ray) at `angle` (rad, material space).
   double of(double angle) const { return map == nullptr && region == nullptr ? factor : painted(angle); }
-  // At most of(angle) for every angle.
-  double lowest() const { return lowestFactor; }
+  // At most of(angle) for every angle (computed when asked: the search divides by
+  // lowestStrengthBetween instead).
+  double lowest() const;
   // At most of(angle) * requiredStrength(table, alpha) for every alpha in [fromDeg, toDeg] (a half
   // turn or more: every alpha), `table` the cloth's own. What the search's bounds divide by: with a
   // region it bounds the blend's two tables each by its own weakest in the interval, where
@@ -97,7 +98,6 @@ struct StrengthScale {
   double weftAngleRad = 0.0;
   Vec2 point = Vec2::Zero();  // the vertex (material space)
   bool ray = false;
-  double lowestFactor = 1.0;
   double lowestUnblended = 1.0;  // factor times the map's lowest multiplier near the point (margin included)
   double regionShare = 0.0;      // the region image's largest share of a line near the point (w_max)
 

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "editor/scene_edits.h"
+#include "scene/preconditioner_names.h"
 #include "panels.h"
 
 namespace weft::editor {
@@ -17,16 +18,6 @@ const char* integratorName(IntegratorKind kind) {
     case IntegratorKind::SymplecticEuler: return "symplectic_euler";
     case IntegratorKind::Bdf2: return "bdf2";
     case IntegratorKind::Bdf2Newton: return "bdf2_newton";
-  }
-  return "";
-}
-
-const char* preconditionerName(PreconditionerKind kind) {
-  switch (kind) {
-    case PreconditionerKind::Amg: return "amg";
-    case PreconditionerKind::LaggedCholesky: return "lagged_cholesky";
-    case PreconditionerKind::LaggedExactCholesky: return "lagged_exact_cholesky";
-    case PreconditionerKind::BlockJacobi: return "block_jacobi";
   }
   return "";
 }
@@ -78,7 +69,8 @@ void drawSolverPanel(EditorSession& session, PanelState& state) {
     const char* preconditioner = preconditionerName(solver.linearPreconditioner);
     ImGui::SetNextItemWidth(170);
     if (ImGui::BeginCombo("preconditioner", preconditioner)) {
-      for (const char* name : {"amg", "lagged_cholesky", "lagged_exact_cholesky", "block_jacobi"}) {
+      for (const PreconditionerKind kind : kPreconditioners) {
+        const char* name = preconditionerName(kind);
         if (ImGui::Selectable(name, std::string(name) == preconditioner)) {
           session.edit(withPreconditioner(session.json(), name), std::string("preconditioner ") + name);
         }
