@@ -22,6 +22,11 @@ double wrapFrom(double angle, double from) {
 
 Vec2 gAt(double theta) { return Vec2(std::sin(theta), -std::cos(theta)); }
 
+// |S n| for the line at `angle` on a closed uniform fan: the traction across it. n = -g(angle).
+double tractionAcross(const StressFan& fan, double angle) { return (fan.uniformStress * gAt(angle)).norm(); }
+
+bool readsUniformly(const StressFan& fan) { return fan.uniform && fan.closed; }
+
 // The traction force on the vertex from the part of the fan inside the arc [from, from + length]
 // (length <= 2 pi), with g at the arc's ends given: each sector's overlap with the arc is at most
 // two pieces (the second when it wraps past the arc's start), and each piece ends at a sector edge
@@ -89,6 +94,7 @@ void stressFan(const ClothMesh& mesh, int vertex, std::span<const int> around,
                const std::vector<TriangleCorners>& corners, const std::vector<Mat2>& triangleStress, StressFan& fan) {
   fan.sectors.clear();
   fan.closed = true;
+  fan.uniform = false;
   fan.openStart = 0.0;
   fan.openSpan = 0.0;
   for (int t : around) {
@@ -106,6 +112,22 @@ void stressFan(const ClothMesh& mesh, int vertex, std::span<const int> around,
     fan.openSpan += sector.span;
   }
   if (fan.closed) fan.openSpan = kTwoPi;
+}
+
+void makeUniform(StressFan& fan, const Mat2& stress) {
+  for (FanSector& sector : fan.sectors) sector.stress = stress;
+  fan.uniform = true;
+  fan.uniformStress = stress;
+}
+
+Mat2 meanStress(const StressFan& fan) {
+  Mat2 sum = Mat2::Zero();
+  double spans = 0.0;
+  for (const FanSector& sector : fan.sectors) {
+    sum += sector.span * sector.stress;
+    spans += sector.span;
+  }
+  return spans > 0.0 ? Mat2(sum / spans) : Mat2::Zero();
 }
 
 FanSector makeSector(double start, double span, const Mat2& stress) {
@@ -143,7 +165,10 @@ double separationFromSides(const StressFan& fan, const LineSides& sides) {
   return (fan.closed ? 0.5 : 1.0) * balancedPull(sides.q1, sides.q2);
 }
 
-double separationStrength(const StressFan& fan, double angle) { return separationFromSides(fan, lineSides(fan, angle)); }
+double separationStrength(const StressFan& fan, double angle) {
+  if (readsUniformly(fan)) return tractionAcross(fan, angle);
+  return separationFromSides(fan, lineSides(fan, angle));
+}
 
 double sideForceRate(const StressFan& fan) {
   double largest = 0.0;
@@ -198,6 +223,8 @@ double fanStrengthBound(std::size_t count, const StressOf& stressOf, const Large
 }  // namespace
 
 double separationStrengthBound(const StressFan& fan) {
+  // |S n| <= the largest principal stress of S (positive semi-definite: an average of sigma+).
+  if (readsUniformly(fan)) return spectralNorm(fan.uniformStress);
   const auto& sectors = fan.sectors;
   return fanStrengthBound(
       sectors.size(), [&](std::size_t k) -> const Mat2& { return sectors[k].stress; },
@@ -233,7 +260,39 @@ int sectorAt(const StressFan& fan, double angle) {
 
 }  // namespace
 
+namespace {
+
+// separationOverPiece on a closed uniform fan. With n = (-sin, cos) and M = S^2,
+// |S n|^2 = n^T M n = (M00 + M11) / 2 + (M11 - M00) / 2 cos 2theta - M01 sin 2theta
+//         = mean + amplitude cos(2 theta - peak).
+LinePieceBound uniformPiece(const StressFan& fan, double middle, double halfWidth) {
+  LinePieceBound piece;
+  piece.edge = std::numeric_limits<double>::quiet_NaN();
+  piece.zeta = tractionAcross(fan, middle);
+  const Mat2 m = fan.uniformStress * fan.uniformStress;
+  const double mean = 0.5 * (m(0, 0) + m(1, 1));
+  const double amplitude = std::hypot(0.5 * (m(1, 1) - m(0, 0)), m(0, 1));
+  const double peak = 0.5 * std::atan2(-m(0, 1), 0.5 * (m(1, 1) - m(0, 0)));  // the largest |S n|, mod pi
+  const double lo = middle - halfWidth, hi = middle + halfWidth;
+  const double firstPeak = peak + std::ceil((lo - peak) / std::numbers::pi) * std::numbers::pi;
+  double largest2;
+  if (firstPeak <= hi) {
+    largest2 = mean + amplitude;
+  } else {
+    const double atLo = tractionAcross(fan, lo), atHi = tractionAcross(fan, hi);
+    largest2 = std::max(atLo * atLo, atHi * atHi);
+  }
+  // The margin covers rounding (of the peak's angle too), so the bound never settles a line that
+  // would tear.
+  piece.bound = std::sqrt(std::max(largest2, 0.0)) * (1.0 + 1e-9) + 1e-12 * spectralNorm(fan.uniformStress);
+  piece.bound = std::max(piece.bound, piece.zeta);
+  return piece;
+}
+
+}  // namespace
+
 LinePieceBound separationOverPiece(const StressFan& fan, double middle, double halfWidth) {
+  if (readsUniformly(fan)) return uniformPiece(fan, middle, halfWidth);
   LinePieceBound piece;
   const Vec2 g = gAt(middle);
   const LineSides sides = lineSidesWith(fan, middle, g);

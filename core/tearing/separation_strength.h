@@ -50,7 +50,18 @@ struct StressFan {
   bool closed = true;     // the sectors go all around (interior vertex)
   double openStart = 0.0;  // not closed: the fan covers [openStart, openStart + openSpan] ccw
   double openSpan = 0.0;
+  // Every sector carries `uniformStress` (the vertex's averaged stress, nonlocal_stress.h). On a
+  // closed fan zeta is then |S n|, the traction across the line (the scale note above), and the
+  // functions below read it without the sectors: no sector edges to split at, and a bound over a
+  // range of lines that is exact (separationOverPiece).
+  bool uniform = false;
+  Mat2 uniformStress = Mat2::Zero();
 };
+
+// Gives every sector of the fan the same stress (and marks it uniform).
+void makeUniform(StressFan& fan, const Mat2& stress);
+// The sectors' stresses weighted by their angles (zero for a fan without sectors).
+Mat2 meanStress(const StressFan& fan);
 
 // The fan of `vertex` (its incident triangles `around`) with the per-triangle stresses. A fan
 // that does not close is open from the sector whose first edge lies on a boundary.
@@ -107,7 +118,9 @@ double sideForceRate(const StressFan& fan);
 double separationBoundNear(const StressFan& fan, const LineSides& sides, double drift);
 
 // zeta of the line at `middle`, and a bound of zeta over the lines within `halfWidth` of it
-// (halfWidth <= pi / 4; for an open fan the piece must lie inside the fan).
+// (halfWidth <= pi / 4; for an open fan the piece must lie inside the fan). On a closed uniform fan
+// the bound is the largest |S n| over the piece, exactly: |S n(theta)|^2 is a constant plus a
+// sinusoid of 2 theta, whose largest value over an interval is at its peak or at an end.
 // Where no sector edge lies inside the piece, each side's force is an explicit function of the
 // line's angle: with Delta the turn from the middle, q(Delta) = q(0) + M (g(middle + Delta) -
 // g(middle)), M a fixed sum of the sectors' stresses, and g(middle + Delta) - g(middle) =

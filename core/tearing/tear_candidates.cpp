@@ -150,7 +150,8 @@ int forEachFirstPiece(const StressFan& fan, double widest, const Visit& visit) {
   int count = 0;
   cuts[count++] = 0.0;
   cuts[count++] = range;
-  if (static_cast<int>(fan.sectors.size()) <= kMostEdgesCut) {
+  // A closed uniform fan reads no sector (its zeta is |S n|): nothing to cut at.
+  if (!(fan.uniform && fan.closed) && static_cast<int>(fan.sectors.size()) <= kMostEdgesCut) {
     const double period = fan.closed ? std::numbers::pi : 2.0 * std::numbers::pi;
     for (const FanSector& sector : fan.sectors) {
       double offset = std::fmod(sector.start - from, period);
@@ -283,6 +284,7 @@ void findTearCandidates(const ClothMesh& mesh, const std::vector<TriangleCorners
   auto fanOf = [&](int v, StressFan& fan) {
     stressFan(mesh, v, std::span<const int>(around.data() + rowStart[v], around.data() + rowStart[v + 1]), corners,
               triangleStress, fan);
+    if (settings.closedFanAsOne && fan.closed) makeUniform(fan, meanStress(fan));
   };
   auto restPositionOf = [&](int v) {
     const Triangle& first = mesh.tris[around[rowStart[v]]];

@@ -44,6 +44,9 @@ struct TearSearchSettings {
   double startClearance = 0.0;
   bool onlyTheBest = false;   // with skipByBound: return only the best vertex's line (one tear per
                               // step), skipping every vertex whose bound cannot beat the best so far
+  // A closed fan reads its sectors' mean stress (weighted by their angles) as one stress at its
+  // vertex (tear_search.h says when and why).
+  bool closedFanAsOne = false;
 };
 
 struct TearCandidate {

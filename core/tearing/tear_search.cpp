@@ -135,12 +135,32 @@ void TearSearch::screenAndLookAtAll(const ClothMesh& mesh, const std::vector<Tri
   // looked at). The same sum in the same order as the bound's, so a vertex it skips has a bound
   // below 1 too.
   largestStress_.resize(stress.size());
-  if (!tipsOnly_) {
+  if (!tipsOnly_ && !settings_.closedFanAsOne) {
     for (std::size_t t = 0; t < stress.size(); ++t) largestStress_[t] = spectralNorm(stress[t]);
   }
   const double screen = (1.0 + 1e-9) / weakestStrength(*table_);
   for (int v = 0; v < n; ++v) {
     if (tipsOnly_ && !onBorder_[v]) continue;  // no crack there: nothing it could be asked
+    if (settings_.skipByBound && !onBorder_[v] && rowStart_[v] < rowStart_[v + 1] && settings_.closedFanAsOne) {
+      // A closed fan read as its mean stress S: no line has more than S's largest principal stress
+      // (separationStrengthBound of a uniform fan); the mean from the rows, without the fan.
+      Mat2 sum = Mat2::Zero();
+      double spans = 0.0;
+      for (int i = rowStart_[v]; i < rowStart_[v + 1]; ++i) {
+        sum += aroundSpan_[i] * stress[around_[i]];
+        spans += aroundSpan_[i];
+      }
+      ++counts.vertices;
+      ++version_[v];
+      sharpened_[v] = 0;
+      bound_[v] = spans > 0.0 ? omegaCeiling(spectralNorm(sum / spans), 1.0, lowestMultiplierAt(mesh, v)) : 0.0;
+      if (bound_[v] < 1.0) {
+        ++counts.skipped;
+      } else {
+        pushEntry(waiting_, Entry{bound_[v], v, version_[v]});
+      }
+      continue;
+    }
     if (settings_.skipByBound && !onBorder_[v] && rowStart_[v] < rowStart_[v + 1]) {
       double weighted = 0.0;
       for (int i = rowStart_[v]; i < rowStart_[v + 1]; ++i) weighted += largestStress_[around_[i]] * aroundSpan_[i];
@@ -233,11 +253,13 @@ CrackPlace TearSearch::fanOf(const ClothMesh& mesh, const std::vector<TriangleCo
   if (!walked_[vertex]) {
     const std::span<const int> triangles(around_.data() + rowStart_[vertex], around_.data() + rowStart_[vertex + 1]);
     stressFan(mesh, vertex, triangles, corners, stress, fan);
+    if (settings_.closedFanAsOne && fan.closed) makeUniform(fan, meanStress(fan));
     // Only a vertex on a border can be on a crack: walk those (few) fans to look at their edges.
     return fan.closed ? CrackPlace::None : crackPlaceOf(mesh, walkFan(mesh, vertex, triangleAt_[vertex]));
   }
   const VertexFan walked = walkFan(mesh, vertex, triangleAt_[vertex]);
   stressFan(mesh, vertex, std::span<const int>(walked.triangles), corners, stress, fan);
+  if (settings_.closedFanAsOne && fan.closed) makeUniform(fan, meanStress(fan));
   return crackPlaceOf(mesh, walked);
 }
 

@@ -15,6 +15,18 @@
 // its lips still carry the stress the crack released until the cloth has moved: read as a fresh
 // load, it would start cracks beside and across the first one at every step (measured: a uniaxial
 // pull then shreds the sheet into strips one element wide).
+//
+// With averaged stress (TearSearchSettings::closedFanAsOne, the tear stage's default) a closed fan
+// reads its sectors' mean stress S, weighted by their angles, as one stress at its vertex: a line's
+// zeta is then |S n|, the traction across it (separation_strength.h), and no line of the fan has
+// more than S's largest principal stress, a bound that is exact and needs no fan (the screen at the
+// start of a step reads it from the rows). Why: each sector's stress is already an average over a
+// disc several elements wide, so the sectors of one fan differ only by the shift between their
+// discs' centres, a fraction of an element; reading them one by one cost the search most of its
+// time (a loaded sheet's thousands of incubation questions a step, each a branch and bound over
+// its sectors) for a difference of that order. Open fans (a border, a crack's tip or lips) still
+// read sector by sector: a tip's sectors ahead carry the load its lips beside it do not, which
+// steers the crack. Measured and compared with the sector reading in docs/tearing.md.
 #include <cstdint>
 #include <optional>
 #include <unordered_map>

@@ -110,6 +110,9 @@ TearStage::TearStage(const Scene& scene) : spec_(scene.tearing) {
   searchSettings_.denseDirections = spec_.denseDirections;
   searchSettings_.skipByBound = spec_.skipByBound;
   searchSettings_.branchFromLips = spec_.branchFromLips;
+  // With averaged stress a fan's sectors differ only by the shift of their discs, a fraction of an
+  // element against a radius of several: read as one (tear_search.h).
+  searchSettings_.closedFanAsOne = spec_.stressLength > 0.0;
   // With averaged stress a tip reads its own fan (the average already spans the material ahead).
   searchSettings_.tipLength = spec_.propagate && spec_.stressLength == 0.0 ? spec_.crackTipLength : 0.0;
   // The largest kink of the maximum hoop stress criterion (Erdogan & Sih 1963), as crack_tip_stress.h.

@@ -188,5 +188,44 @@ TEST(SeparationStrength, TheBoundNearALineTendsToItsSeparation) {
   }
 }
 
+
+// A closed fan whose sectors all read one stress S (the vertex's averaged stress) is read as S
+// alone: zeta = |S n| without the sectors, as the sectors give it; the bound over a piece of lines
+// is the largest |S n| in it (exact, not of second order), and never below a line of the piece.
+TEST(SeparationStrength, AUniformFanReadsTheTractionAcrossEachLineAsItsSectorsDo) {
+  std::mt19937 rng(21);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (int trial = 0; trial < 200; ++trial) {
+    StressFan bySectors = test::randomFan(rng, true);
+    const Mat2 stress = tensilePart(uniaxial(300.0 * unit(rng), 2.0 * kPi * unit(rng)) +
+                                    uniaxial(100.0 * unit(rng), 2.0 * kPi * unit(rng)));
+    for (FanSector& sector : bySectors.sectors) sector.stress = stress;
+    StressFan uniform = bySectors;
+    makeUniform(uniform, stress);
+    ASSERT_TRUE(uniform.uniform);
+    EXPECT_NEAR(separationStrengthBound(uniform), spectralNorm(stress), 1e-12 * (1.0 + spectralNorm(stress)));
+    for (double beta = 0.0; beta < kPi; beta += 0.05) {
+      EXPECT_NEAR(separationStrength(uniform, beta), separationStrength(bySectors, beta), 1e-9 * (1.0 + spectralNorm(stress)))
+          << "trial " << trial << ", line at " << beta;
+      EXPECT_LE(separationStrength(uniform, beta), separationStrengthBound(uniform) * (1.0 + 1e-12));
+    }
+    for (const double halfWidth : {0.3, 0.05, 0.001}) {
+      const double middle = kPi * unit(rng);
+      const LinePieceBound piece = separationOverPiece(uniform, middle, halfWidth);
+      EXPECT_FALSE(std::isfinite(piece.edge));  // no sector edges to split at
+      EXPECT_NEAR(piece.zeta, separationStrength(uniform, middle), 1e-12 * (1.0 + piece.zeta));
+      double largest = 0.0;
+      for (int k = 0; k <= 400; ++k) {
+        largest = std::max(largest, separationStrength(uniform, middle - halfWidth + 2.0 * halfWidth * k / 400.0));
+      }
+      EXPECT_GE(piece.bound, largest) << "trial " << trial << ", half width " << halfWidth;
+      // Exact: within the sampling's own error of the largest line (a sample is at most
+      // halfWidth / 400 from the peak, where |S n| is flat to second order).
+      EXPECT_LE(piece.bound - largest, 1e-6 * (1.0 + largest) + spectralNorm(stress) * std::pow(halfWidth / 400.0, 2))
+          << "trial " << trial << ", half width " << halfWidth;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace weft

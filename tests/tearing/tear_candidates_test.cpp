@@ -10,6 +10,7 @@
 #include "support/collision_meshes.h"
 #include "support/random_fan.h"
 #include "tearing/tear_selection.h"
+#include "tearing/vertex_fan.h"
 
 namespace weft {
 namespace {
@@ -111,8 +112,10 @@ TEST(TearCandidates, SkippingByTheBoundChangesNothing) {
   table.strength = {12.0, 25.0, 35.0, 25.0};
   table.unitNPerM = 10.0;
   for (const CandidateLines lines : {CandidateLines::Thesis, CandidateLines::Dense}) {
+   for (const bool asOne : {false, true}) {
     TearSearchSettings with, without;
     with.lines = without.lines = lines;
+    with.closedFanAsOne = without.closedFanAsOne = asOne;
     without.skipByBound = false;
     std::vector<TearCandidate> a, b;
     TearSearchCounts countsWith, countsWithout;
@@ -127,7 +130,55 @@ TEST(TearCandidates, SkippingByTheBoundChangesNothing) {
     }
     EXPECT_GT(countsWith.skipped, 0) << "the bound should skip the quiet vertices";
     EXPECT_LT(countsWith.linesEvaluated, countsWithout.linesEvaluated);
+   }
   }
+}
+
+// Read as one (the averaged stress's mode, tear_search.h), a closed fan's lines read the traction
+// of its sectors' mean stress, weighted by their angles: an interior vertex's best line is the one
+// across that mean's pull as the table weighs it, whatever its sectors' own stresses.
+TEST(TearCandidates, AClosedFanReadAsOneTearsAsItsSectorsMeanStress) {
+  const ClothMesh mesh = grid(12);
+  const std::vector<TriangleCorners> corners = triangleCorners(mesh);
+  // Each triangle pulled its own way: the fans' sectors differ widely.
+  std::vector<Mat2> stress(mesh.tris.size());
+  for (std::size_t t = 0; t < stress.size(); ++t) {
+    const double a = 0.9 * static_cast<double>(t);
+    const Vec2 d(std::cos(a), std::sin(a));
+    stress[t] = 400.0 * d * d.transpose() + 60.0 * Mat2::Identity();
+  }
+  TearTable table;
+  table.strength = {12.0, 25.0, 35.0, 25.0};
+  table.unitNPerM = 10.0;
+  TearSearchSettings asOne;
+  asOne.closedFanAsOne = true;
+  std::vector<TearCandidate> found;
+  TearSearchCounts counts;
+  findTearCandidates(mesh, corners, stress, table, 0.3, asOne, found, counts);
+  int interior = 0;
+  for (const TearCandidate& line : found) {
+    if (line.ray) continue;
+    ++interior;
+    // The mean over the vertex's triangles, weighted by its corner angle in each.
+    Mat2 sum = Mat2::Zero();
+    double spans = 0.0;
+    for (int t = 0; t < mesh.triangleCount(); ++t) {
+      const int k = cornerOf(mesh.tris[t], line.vertex);
+      if (k == kNone) continue;
+      sum += corners[t][k].span * stress[t];
+      spans += corners[t][k].span;
+    }
+    const Mat2 mean = sum / spans;
+    const Vec2 normal(-std::sin(line.angle), std::cos(line.angle));
+    EXPECT_NEAR(line.separation, (mean * normal).norm(), 1e-9 * (mean * normal).norm()) << "vertex " << line.vertex;
+    // No other line through the vertex does better against the table.
+    for (double angle = 0.0; angle < kPi; angle += kPi / 360.0) {
+      const Vec2 n(-std::sin(angle), std::cos(angle));
+      const double ratio = (mean * n).norm() / requiredStrength(table, angleFromWarpDeg(angle, 0.3));
+      EXPECT_LE(ratio, line.ratio * (1.0 + 1e-9)) << "vertex " << line.vertex << ", line at " << angle;
+    }
+  }
+  EXPECT_GT(interior, 10);
 }
 
 TEST(TearSelection, TheThesisRatioExampleAWithTenOverEightBeatsBWithTwentyOverNineteen) {

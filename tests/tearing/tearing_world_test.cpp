@@ -371,23 +371,46 @@ TEST(Tearing, Table41Cloth4TearsMostlyVerticallyOnAnEvenFabricAndNotOnDenimInThe
 // two vertical tears, the cloth holds it, and a horizontal tear then joins them: a flap. Measured
 // on the shipped scene at its 40^2 after 0.5 s: the torn length within 22.5 deg of vertical in
 // groups along x, and the horizontal torn length between the two longest groups. The default
-// tears vertically only (0.94 of 1.65 m): through the ball's point from border to border and
-// along the right clamps, 0.44 m apart, and nothing joins them; no line across reaches the
+// tears mostly vertically: through the ball's point from border to border and along the clamps of
+// one side, 0.44 m apart, and nothing joins them; no line across reaches the
 // horizontal strength (an isotropic table at it, 1050 N/m, never tears under this ball). So only
 // the first half is asserted unless WEFT_THESIS_CLOTH3_JOIN is set (docs/tearing.md, "What
 // remains"): then the join is, and the test fails until the figure is reproduced.
-TEST(Tearing, Table41Cloth3OpensTwoVerticalTearsJoinedByAHorizontalOne) {
-  const std::string scene = std::string(WEFT_SOURCE_DIR) + "/presets/scenes/ball-into-sheet-table4.1-cloth3.json";
-  World world(loadScene(scene));
-  for (int s = 0; s < 120; ++s) world.step();  // 0.5 s: the ball has gone through
+// The torn segments of the shipped Cloth 3 scene after 0.5 s (the ball has gone through), its
+// ball shifted by `shift` (m).
+std::vector<test::TornSegment> tornByCloth3Ball(const Vec3& shift = Vec3::Zero()) {
+  Scene scene = loadScene(std::string(WEFT_SOURCE_DIR) + "/presets/scenes/ball-into-sheet-table4.1-cloth3.json");
+  scene.obstacles[0].translate += shift;
+  World world(scene);
+  for (int s = 0; s < 120; ++s) world.step();
   EXPECT_TRUE(world.metrics().finite);
-  const std::vector<test::TornSegment> torn = test::tornSegments(world.cloth(0));
+  return test::tornSegments(world.cloth(0));
+}
+
+TEST(Tearing, Table41Cloth3OpensTwoVerticalTearsJoinedByAHorizontalOne) {
+  const std::vector<test::TornSegment> torn = tornByCloth3Ball();
   const test::FlapMeasure flap = test::flapMeasure(torn);
   const double total = test::tornLength(torn);
   std::printf("[ cloth 3 ] torn %.2f m, %.2f of it vertical; vertical tears %.2f m and %.2f m, %.2f m apart; "
               "horizontal between them %.2f m\n",
               total, total > 0.0 ? flap.vertical / total : 0.0, flap.left, flap.right, flap.separation, flap.joining);
-  EXPECT_GE(flap.vertical, 0.9 * total);
+  // Mostly vertical: the median over the ball's path shifted up to 2 cm each way, not one path.
+  // How much of the torn length is vertical hangs on where the side cracks start, which a 2 cm
+  // shift moves: on a 3 x 3 grid of shifts the share ran from 0.88 to 0.98 (median 0.91) with the
+  // per-sector reading of every fan, 0.86 to 0.97 (median 0.91) with closed fans read as one
+  // (docs/tearing.md); the shipped path alone gave 0.94 with the one and 0.89 with the other.
+  std::vector<double> shares;
+  for (double dx : {-0.02, 0.0, 0.02}) {
+    for (double dy : {-0.02, 0.0, 0.02}) {
+      const std::vector<test::TornSegment> shifted = dx == 0.0 && dy == 0.0 ? torn : tornByCloth3Ball(Vec3(dx, dy, 0.0));
+      const double length = test::tornLength(shifted);
+      shares.push_back(length > 0.0 ? test::flapMeasure(shifted).vertical / length : 0.0);
+    }
+  }
+  std::sort(shares.begin(), shares.end());
+  std::printf("[ cloth 3 ] vertical share over the 9 shifted paths: %.2f to %.2f, median %.2f\n", shares.front(),
+              shares.back(), shares[4]);
+  EXPECT_GE(shares[4], 0.9);
   EXPECT_GE(flap.left, 0.1);
   EXPECT_GE(flap.right, 0.1);
   EXPECT_GE(flap.separation, 0.08) << "the two vertical tears should be apart";
@@ -405,14 +428,17 @@ struct CeilingRun {
   double horizontalShare = 0.0;
 };
 
-CeilingRun dropOnCeiling(bool heavy) {
-  const std::string scene = std::string(WEFT_SOURCE_DIR) + "/presets/scenes/balls-on-cloth-ceiling.json";
+// `shift`: the dropped ball moved this far (m) in x and z from where the scene drops it.
+CeilingRun dropOnCeiling(bool heavy, const Vec3& shift = Vec3::Zero()) {
+  const std::string path = std::string(WEFT_SOURCE_DIR) + "/presets/scenes/balls-on-cloth-ceiling.json";
   // The other ball is moved far aside, where it falls without touching anything.
   const std::string aside = heavy ? "obstacles.0.placement.translate=[10,1.3,0]" : "obstacles.1.placement.translate=[10,2.8,0]";
   // At the shipped 32^2. At 24^2 (cells of 4.3 cm, two thirds of the default's 6.5 cm averaging
   // radius) the default tears the ceiling at its corner clamps and the heavy ball stays in the sag
   // (0.82 m up at 2 s); at 32^2 and 48^2 it tears under the ball and falls through.
-  World world(loadScene(scene, {aside, "cloths.0.mesh.grid.resolution=[32,32]"}));
+  Scene scene = loadScene(path, {aside, "cloths.0.mesh.grid.resolution=[32,32]"});
+  scene.obstacles[heavy ? 1 : 0].translate += shift;
+  World world(scene);
   for (int s = 0; s < 240; ++s) world.step();  // 2 s
   CeilingRun run;
   run.tears = world.tearStats().tears;
@@ -454,6 +480,13 @@ TEST(Tearing, ALightBallStaysOnAClothCeilingAndAHeavyOneTearsThrough) {
   EXPECT_GT(heavy.tears, 5);
   EXPECT_LT(heavy.ballHeight, 0.0) << "fallen through the ceiling";
   EXPECT_GE(heavy.horizontalShare, 0.8) << "Cloth 2 tears along the weft";
+  // Not at one lucky point: dropped 2 cm aside in any direction, it tears through as well (at the
+  // scene's former drop point, (0.15, -0.1), about 3 cm away, it stayed in the sag: docs/tearing.md).
+  for (const Vec3& shift : {Vec3(0.02, 0, 0), Vec3(-0.02, 0, 0), Vec3(0, 0, 0.02), Vec3(0, 0, -0.02)}) {
+    const CeilingRun aside = dropOnCeiling(true, shift);
+    EXPECT_LT(aside.ballHeight, 0.0) << "dropped " << shift.transpose() << " m aside";
+    EXPECT_GE(aside.horizontalShare, 0.8) << "dropped " << shift.transpose() << " m aside";
+  }
 }
 
 }  // namespace
