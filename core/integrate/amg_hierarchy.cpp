@@ -5,71 +5,11 @@
 
 #include <Eigen/LU>  // computeInverseAndDetWithCheck
 
+#include "integrate/amg_aggregation.h"
+#include "integrate/amg_patch.h"
+
 namespace weft {
 namespace {
-
-constexpr int kUnassigned = -2;
-constexpr int kIsolated = -1;
-
-// Strong neighbours of every vertex (Vanek et al. 1996, eq. 3.2, with Frobenius norms of blocks).
-std::vector<std::vector<int>> strongNeighbours(const BlockSparseMatrix& A, double theta) {
-  const int n = A.blockRows;
-  std::vector<double> diagonalNorm(n, 0.0);
-  for (int i = 0; i < n; ++i) {
-    const int d = A.find(i, i);
-    if (d >= 0) diagonalNorm[i] = A.blocks[d].norm();
-  }
-  std::vector<std::vector<int>> strong(n);
-  for (int i = 0; i < n; ++i) {
-    for (int k = A.rowStart[i]; k < A.rowStart[i + 1]; ++k) {
-      const int j = A.column[k];
-      if (j == i) continue;
-      const double norm = A.blocks[k].norm();
-      if (norm > 0.0 && norm >= theta * std::sqrt(diagonalNorm[i] * diagonalNorm[j])) strong[i].push_back(j);
-    }
-  }
-  return strong;
-}
-
-// The three passes of Vanek et al. 1996 (section 4.1), in vertex order: deterministic.
-// Returns the aggregate count; aggregateOf[i] = kIsolated for vertices without strong neighbours.
-int aggregate(const std::vector<std::vector<int>>& strong, std::vector<int>& aggregateOf) {
-  const int n = static_cast<int>(strong.size());
-  aggregateOf.assign(n, kUnassigned);
-  int count = 0;
-  for (int i = 0; i < n; ++i) {
-    if (strong[i].empty()) aggregateOf[i] = kIsolated;
-  }
-  // 1. Roots: a free vertex whose strong neighbours are all free takes them.
-  for (int i = 0; i < n; ++i) {
-    if (aggregateOf[i] != kUnassigned) continue;
-    const bool allFree = std::all_of(strong[i].begin(), strong[i].end(), [&](int j) { return aggregateOf[j] == kUnassigned; });
-    if (!allFree) continue;
-    aggregateOf[i] = count;
-    for (int j : strong[i]) aggregateOf[j] = count;
-    ++count;
-  }
-  // 2. The rest join the aggregate of their first strong neighbour aggregated in pass 1.
-  const std::vector<int> afterRoots = aggregateOf;
-  for (int i = 0; i < n; ++i) {
-    if (aggregateOf[i] != kUnassigned) continue;
-    for (int j : strong[i]) {
-      if (afterRoots[j] >= 0) {
-        aggregateOf[i] = afterRoots[j];
-        break;
-      }
-    }
-  }
-  // 3. Whatever is left forms aggregates with its free strong neighbours.
-  for (int i = 0; i < n; ++i) {
-    if (aggregateOf[i] != kUnassigned) continue;
-    aggregateOf[i] = count;
-    for (int j : strong[i])
-      if (aggregateOf[j] == kUnassigned) aggregateOf[j] = count;
-    ++count;
-  }
-  return count;
-}
 
 Mat3 safeInverse(const Mat3& block) {
   Mat3 inverse;
@@ -85,15 +25,48 @@ void AmgHierarchy::build(const BlockSparseMatrix& finest) {
   levels_.clear();
   levels_.emplace_back();
   levels_[0].A = finest;
-  for (int l = 0;; ++l) {
-    computeDiagonal(levels_[l]);
+  computeDiagonal(levels_[0]);
+  buildBelow(0);
+  factorCoarsest();
+}
+
+void AmgHierarchy::buildBelow(int l) {
+  levels_.resize(l + 1);
+  for (;; ++l) {
     if (levels_[l].A.blockRows <= settings_.coarsestVertices || l + 1 >= settings_.maxLevels) break;
     if (!coarsen(l)) break;
     estimateOmega(levels_[l]);
     smoothProlongator(levels_[l]);
     galerkinProduct(l);
+    computeDiagonal(levels_[l + 1]);
+  }
+}
+
+bool AmgHierarchy::patch(const BlockSparseMatrix& finest, const BlockPattern& previousFinest, int threads) {
+  if (levels_.size() < 2) return false;  // nothing coarsened: a build is as cheap
+  levels_[0].A = finest;
+  computeDiagonal(levels_[0], threads);
+  TransferPatch transfer;
+  const BlockPattern* previous = &previousFinest;
+  BlockPattern previousCoarse;
+  std::vector<int> seeds;
+  for (int l = 0;; ++l) {
+    const bool large = l == 0 || levels_[l].A.blockRows >= settings_.patchMinimumVertices;
+    if (l + 1 < levelCount() && large && patchTransfer(levels_[l], levels_[l + 1], *previous, seeds, settings_, transfer)) {
+      smoothProlongator(levels_[l], threads);  // omega kept from the build
+      galerkinProduct(l, threads);
+      computeDiagonal(levels_[l + 1], threads);
+      previousCoarse = std::move(transfer.previousCoarse);
+      previous = &previousCoarse;
+      seeds = std::move(transfer.coarseSeeds);
+      continue;
+    }
+    if (l == 0) return false;
+    buildBelow(l);
+    break;
   }
   factorCoarsest();
+  return true;
 }
 
 void AmgHierarchy::refresh(const BlockSparseMatrix& finest, int threads) {
@@ -113,7 +86,12 @@ bool AmgHierarchy::coarsen(int l) {
   Level& fine = levels_[l];
   const BlockSparseMatrix& A = fine.A;
   const int n = A.blockRows;
-  const int coarseCount = aggregate(strongNeighbours(A, settings_.strengthThreshold), fine.aggregateOf);
+  std::vector<int> everyVertex(n);
+  for (int i = 0; i < n; ++i) everyVertex[i] = i;
+  fine.aggregateOf.assign(n, amg::kUnassigned);
+  AggregateIds ids({}, 0);
+  aggregateFreeVertices(A, settings_.strengthThreshold, everyVertex, fine.aggregateOf, ids);
+  const int coarseCount = ids.end();
   if (coarseCount == 0 || coarseCount > settings_.stallRatio * n) {
     fine.aggregateOf.clear();
     return false;

@@ -22,7 +22,9 @@
 // aggregates, the patterns of P, A P and A_c and the index lists that fill them. refresh() redoes
 // only the numbers for new values of the finest matrix in the same pattern: the Galerkin products
 // always, the prolongators' smoothing only when asked (they may be kept from the last build while
-// the topology holds). Nothing is allocated by refresh().
+// the topology holds). Nothing is allocated by refresh(). patch() takes a pattern that changed
+// locally (a tear, a cut): it keeps the aggregates and rows away from the change and redoes the
+// rest (amg_patch.h), level by level, then the numbers.
 #include <vector>
 
 #include <Eigen/Cholesky>
@@ -31,6 +33,13 @@
 #include "integrate/block_sparse_matrix.h"
 
 namespace weft {
+
+// A block pattern as it stood before a change: a BlockSparseMatrix's rows without values.
+struct BlockPattern {
+  std::vector<int> rowStart;  // rows + 1 entries
+  std::vector<int> column;    // increasing within a row
+  int rows() const { return rowStart.empty() ? 0 : static_cast<int>(rowStart.size()) - 1; }
+};
 
 struct AmgSettings {
   double strengthThreshold = 0.02;  // theta above (dimensionless)
@@ -41,6 +50,13 @@ struct AmgSettings {
   int powerIterations = 8;          // for the estimate of rho(D^-1 A) of each level
   bool resmoothProlongators = true;  // refresh() recomputes P from the new A (else P is kept from build(): measured
                                     // 30 -> 40 CG iterations per step over 1 s of the falling 64² sheet)
+  // patch(): a level whose patch would aggregate more than this share of its vertices again is
+  // built anew instead (a change that is not local; the finest level: the whole hierarchy).
+  double patchLimit = 0.25;
+  // patch(): coarse levels with fewer vertices than this are built anew below the patched ones
+  // (their build is cheap, and it keeps them as a fresh build would make them); the finest level
+  // is always patched.
+  int patchMinimumVertices = 1000;
 };
 
 class AmgHierarchy {
@@ -71,6 +87,13 @@ class AmgHierarchy {
   // Takes the values of `finest`, which must have the pattern build() saw, and redoes the numbers.
   // Row-wise parts over `threads` (same bits for any count).
   void refresh(const BlockSparseMatrix& finest, int threads = 1);
+  // Takes `finest` (pattern and values) whose pattern differs from `previousFinest`, the pattern
+  // the hierarchy was last built or patched for, by a local change (rows added at the end, blocks
+  // added or removed in a few rows): patches the levels from the finest down while they are large
+  // (AmgSettings::patchMinimumVertices), builds the smaller ones anew, and redoes the numbers.
+  // Returns false, leaving the hierarchy to be built (build()), when there is no coarse level yet
+  // or the change is not local (AmgSettings::patchLimit).
+  bool patch(const BlockSparseMatrix& finest, const BlockPattern& previousFinest, int threads = 1);
 
   int levelCount() const { return static_cast<int>(levels_.size()); }
   const Level& level(int l) const { return levels_[l]; }
@@ -83,6 +106,7 @@ class AmgHierarchy {
 
  private:
   bool coarsen(int l);           // symbolic setup of level l -> l + 1 (aggregates, patterns, slots); false: stop here
+  void buildBelow(int l);        // builds the levels below l anew (level l's operator and diagonal are set)
   void computeDiagonal(Level& level, int threads = 1);
   void estimateOmega(Level& level);
   void smoothProlongator(Level& level, int threads = 1);

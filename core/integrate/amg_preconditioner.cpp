@@ -118,11 +118,20 @@ void AmgPreconditioner::gather(const SystemMatrix& A) {
 
 void AmgPreconditioner::prepare(const SystemMatrix& A) {
   const bool patternChanged = A.patternVersion() != analyzedPatternVersion_ || A.matrix().rows() != analyzedSize_;
-  if (patternChanged) analyze(A);
+  BlockPattern previousFinest;
+  if (patternChanged) {
+    previousFinest.rowStart = std::move(finest_.rowStart);
+    previousFinest.column = std::move(finest_.column);
+    analyze(A);
+  }
   gather(A);
   if (patternChanged || hierarchy_.levelCount() == 0) {
-    hierarchy_.build(finest_);
-    ++fullSetups_;
+    if (settings_.patchAfterPatternChange && hierarchy_.patch(finest_, previousFinest, threads_)) {
+      ++patchedSetups_;
+    } else {
+      hierarchy_.build(finest_);
+      ++fullSetups_;
+    }
     if (settings_.singlePrecisionCycle) floatCycle_.build(hierarchy_);
   } else {
     hierarchy_.refresh(finest_, threads_);

@@ -15,10 +15,11 @@
 // SystemMatrix::constrainVertices): they stay out of the coarse spaces and the smoother solves
 // them exactly, so the constraints are filtered as the CG's matrix filters them.
 //
-// Lazy setup: the aggregates and the patterns and index lists of every level are built when the
-// matrix pattern changes (the first solve, a tear or a cut: the whole hierarchy is rebuilt, at a
-// cost of a few steps' numeric setup, see docs/solver.md); every other solve only gathers the new
-// values and redoes the numbers (prolongator smoothing, Galerkin products, coarsest factor).
+// Lazy setup: the aggregates and the patterns and index lists of every level are built at the
+// first solve; every other solve only gathers the new values and redoes the numbers (prolongator
+// smoothing, Galerkin products, coarsest factor). A pattern change (a tear or a cut) patches the
+// hierarchy around the change (amg_patch.h) instead of building it anew, which cost a few steps'
+// numeric setup (docs/solver.md); a change too large to be local is built anew.
 //
 // Deterministic: a fixed order of operations; the row-wise parts use solver.threads (fixed row
 // ranges, each row computed alike), and the result does not depend on the thread count.
@@ -39,6 +40,7 @@ class AmgPreconditioner final : public Preconditioner {
     AmgSettings hierarchy;
     int smoothingSweeps = 1;  // block Gauss-Seidel sweeps before and after each coarse correction
     bool singlePrecisionCycle = true;  // the V-cycle in float (amg_float_cycle.h); the setup stays in double
+    bool patchAfterPatternChange = true;  // a pattern change patches the hierarchy (else: built anew)
   };
 
   AmgPreconditioner() : AmgPreconditioner(Settings{}) {}
@@ -51,8 +53,10 @@ class AmgPreconditioner final : public Preconditioner {
   // on one thread. Every row is computed by the same code in the same order: the same bits.
   void setThreads(int threads) override { threads_ = std::max(threads, 1); }
 
-  // Full (symbolic) setups so far: one per pattern.
+  // Full (symbolic) setups so far: the first, and pattern changes that could not be patched.
   int fullSetups() const { return fullSetups_; }
+  // Pattern changes met by patching the hierarchy (AmgHierarchy::patch).
+  int patchedSetups() const { return patchedSetups_; }
   const AmgHierarchy& hierarchy() const { return hierarchy_; }
 
  private:
@@ -74,6 +78,7 @@ class AmgPreconditioner final : public Preconditioner {
   int analyzedPatternVersion_ = -1;
   Eigen::Index analyzedSize_ = -1;
   int fullSetups_ = 0;
+  int patchedSetups_ = 0;
   int threads_ = 1;
 };
 

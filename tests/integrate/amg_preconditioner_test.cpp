@@ -1,7 +1,8 @@
 // The smoothed-aggregation multigrid preconditioner on real cloth systems (the benchmark's
 // hanging sheet, royal-target at 1/60 s, taken in motion): a symmetric positive definite V-cycle,
 // the CG reaching the direct solver's answer, iterations that stay bounded as the grid is refined
-// (block Jacobi's grow with the resolution), a correct solve after the pattern grows as in a tear,
+// (block Jacobi's grow with the resolution), a correct solve after the pattern grows as in a tear
+// (patched or rebuilt; the patch itself: amg_patch_test.cpp),
 // and whole runs, tearing included, that do not depend on the thread count.
 #include <gtest/gtest.h>
 
@@ -152,41 +153,50 @@ TEST(AmgPreconditioner, IterationsStayBoundedAsTheGridIsRefined) {
   EXPECT_GT(jacobiIterations[2], 2 * jacobiIterations[0]);  // what the bound above rules out
 }
 
-TEST(AmgPreconditioner, RebuildsAfterThePatternGrowsAsInATear) {
-  ClothSystem system = movingSheetSystem(16, 20);
-  PreconditionedConjugateGradient cg(1e-10, 2000);
-  AmgPreconditioner amg;
-  Eigen::VectorXd x = Eigen::VectorXd::Zero(system.b.size());
-  EXPECT_TRUE(cg.solve(system.A, system.b, 0.0, amg, x).converged);
-  EXPECT_EQ(amg.fullSetups(), 1);
-  // Same pattern, new values: no new setup.
-  system.A.matrix() *= 1.1;
-  x.setZero();
-  EXPECT_TRUE(cg.solve(system.A, system.b, 0.0, amg, x).converged);
-  EXPECT_EQ(amg.fullSetups(), 1);
+TEST(AmgPreconditioner, PatchesOrRebuildsAfterThePatternGrowsAsInATear) {
+  // By default a pattern change patches the hierarchy (amg_patch.h); without the patch it is built
+  // anew. Either way the solve after it is right.
+  for (const bool patch : {true, false}) {
+    ClothSystem system = movingSheetSystem(16, 20);
+    PreconditionedConjugateGradient cg(1e-10, 2000);
+    AmgPreconditioner::Settings settings;
+    settings.patchAfterPatternChange = patch;
+    AmgPreconditioner amg(settings);
+    Eigen::VectorXd x = Eigen::VectorXd::Zero(system.b.size());
+    EXPECT_TRUE(cg.solve(system.A, system.b, 0.0, amg, x).converged);
+    EXPECT_EQ(amg.fullSetups(), 1);
+    // Same pattern, new values: no new setup.
+    system.A.matrix() *= 1.1;
+    x.setZero();
+    EXPECT_TRUE(cg.solve(system.A, system.b, 0.0, amg, x).converged);
+    EXPECT_EQ(amg.fullSetups(), 1);
+    EXPECT_EQ(amg.patchedSetups(), 0);
 
-  // A tear appends vertices and couples them: two new vertices hung off vertex `m` and each other.
-  const int n = system.A.vertexCount();
-  const int m = n / 2 + 8;
-  system.A.growPattern(n + 2, {{m, n}, {n, n + 1}});
-  const double k = system.A.matrix().coeff(3 * m, 3 * m);
-  auto couple = [&](int i, int j) {
-    system.A.addBlock(i, i, k * Mat3::Identity());
-    system.A.addBlock(j, j, k * Mat3::Identity());
-    system.A.addBlock(i, j, -k * Mat3::Identity());
-    system.A.addBlock(j, i, -k * Mat3::Identity());
-  };
-  couple(m, n);
-  couple(n, n + 1);
-  system.A.addDiagonal(n, 1e-3);
-  system.A.addDiagonal(n + 1, 1e-3);
-  system.b.conservativeResize(3 * (n + 2));
-  system.b.tail<6>() = randomVector(6, 5);
-  x = Eigen::VectorXd::Zero(system.b.size());
-  EXPECT_TRUE(cg.solve(system.A, system.b, 0.0, amg, x).converged);
-  EXPECT_EQ(amg.fullSetups(), 2);
-  const Eigen::VectorXd expected = directSolve(system.A, system.b);
-  EXPECT_LT((x - expected).norm(), 1e-6 * expected.norm());
+    // A tear appends vertices and couples them: two new vertices hung off vertex `m` and each other.
+    const int n = system.A.vertexCount();
+    const int m = n / 2 + 8;
+    system.A.growPattern(n + 2, {{m, n}, {n, n + 1}});
+    const double k = system.A.matrix().coeff(3 * m, 3 * m);
+    auto couple = [&](int i, int j) {
+      system.A.addBlock(i, i, k * Mat3::Identity());
+      system.A.addBlock(j, j, k * Mat3::Identity());
+      system.A.addBlock(i, j, -k * Mat3::Identity());
+      system.A.addBlock(j, i, -k * Mat3::Identity());
+    };
+    couple(m, n);
+    couple(n, n + 1);
+    system.A.addDiagonal(n, 1e-3);
+    system.A.addDiagonal(n + 1, 1e-3);
+    system.b.conservativeResize(3 * (n + 2));
+    system.b.tail<6>() = randomVector(6, 5);
+    x = Eigen::VectorXd::Zero(system.b.size());
+    EXPECT_TRUE(cg.solve(system.A, system.b, 0.0, amg, x).converged);
+    EXPECT_EQ(amg.fullSetups(), patch ? 1 : 2);
+    EXPECT_EQ(amg.patchedSetups(), patch ? 1 : 0);
+    EXPECT_EQ(amg.hierarchy().level(0).A.blockRows, n + 2);
+    const Eigen::VectorXd expected = directSolve(system.A, system.b);
+    EXPECT_LT((x - expected).norm(), 1e-6 * expected.norm()) << (patch ? "patched" : "rebuilt");
+  }
 }
 
 TEST(AmgPreconditioner, DegenerateHierarchiesStillSolve) {
