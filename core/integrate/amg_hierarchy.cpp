@@ -7,6 +7,7 @@
 
 #include "integrate/amg_aggregation.h"
 #include "integrate/amg_patch.h"
+#include "integrate/amg_transfer_pattern.h"
 
 namespace weft {
 namespace {
@@ -96,62 +97,8 @@ bool AmgHierarchy::coarsen(int l) {
     fine.aggregateOf.clear();
     return false;
   }
-  const std::vector<int>& aggregateOf = fine.aggregateOf;
-
-  // P's pattern: the aggregates of a vertex and of its neighbours in A.
-  std::vector<std::vector<int>> columnsOfRow(n);
-  for (int i = 0; i < n; ++i) {
-    if (aggregateOf[i] >= 0) columnsOfRow[i].push_back(aggregateOf[i]);
-    for (int k = A.rowStart[i]; k < A.rowStart[i + 1]; ++k)
-      if (aggregateOf[A.column[k]] >= 0) columnsOfRow[i].push_back(aggregateOf[A.column[k]]);
-  }
-  fine.P.setPattern(n, coarseCount, columnsOfRow);
-  fine.tentativeSlots.assign(n, -1);
-  fine.smoothingSlots.assign(A.blockCount(), -1);
-  for (int i = 0; i < n; ++i) {
-    if (aggregateOf[i] >= 0) fine.tentativeSlots[i] = fine.P.find(i, aggregateOf[i]);
-    for (int k = A.rowStart[i]; k < A.rowStart[i + 1]; ++k)
-      if (aggregateOf[A.column[k]] >= 0) fine.smoothingSlots[k] = fine.P.find(i, aggregateOf[A.column[k]]);
-  }
-
-  // A P: row i holds the columns of P's rows j over the blocks (i, j) of A.
-  const BlockSparseMatrix& P = fine.P;
-  for (int i = 0; i < n; ++i) {
-    columnsOfRow[i].clear();
-    for (int k = A.rowStart[i]; k < A.rowStart[i + 1]; ++k) {
-      const int j = A.column[k];
-      columnsOfRow[i].insert(columnsOfRow[i].end(), P.column.begin() + P.rowStart[j], P.column.begin() + P.rowStart[j + 1]);
-    }
-  }
-  fine.AP.setPattern(n, coarseCount, columnsOfRow);
-  fine.productSlots.clear();
-  fine.productStart.assign(n + 1, 0);
-  for (int i = 0; i < n; ++i) {
-    for (int k = A.rowStart[i]; k < A.rowStart[i + 1]; ++k) {
-      const int j = A.column[k];
-      for (int p = P.rowStart[j]; p < P.rowStart[j + 1]; ++p) fine.productSlots.push_back(fine.AP.find(i, P.column[p]));
-    }
-    fine.productStart[i + 1] = static_cast<int>(fine.productSlots.size());
-  }
-
-  // A_c = P^T (A P): block (I, K) gathers P(i, I)^T AP(i, K) over the fine vertices i.
-  std::vector<std::vector<int>> coarseColumns(coarseCount);
-  const BlockSparseMatrix& AP = fine.AP;
-  for (int i = 0; i < n; ++i)
-    for (int p = P.rowStart[i]; p < P.rowStart[i + 1]; ++p)
-      coarseColumns[P.column[p]].insert(coarseColumns[P.column[p]].end(), AP.column.begin() + AP.rowStart[i],
-                                        AP.column.begin() + AP.rowStart[i + 1]);
   Level coarse;
-  coarse.A.setPattern(coarseCount, coarseCount, coarseColumns);
-  fine.galerkinSlots.clear();
-  for (int i = 0; i < n; ++i)
-    for (int p = P.rowStart[i]; p < P.rowStart[i + 1]; ++p)
-      for (int w = AP.rowStart[i]; w < AP.rowStart[i + 1]; ++w)
-        fine.galerkinSlots.push_back(coarse.A.find(P.column[p], AP.column[w]));
-  coarse.transposeSlots.resize(coarse.A.blockCount());
-  for (int I = 0; I < coarseCount; ++I)
-    for (int s = coarse.A.rowStart[I]; s < coarse.A.rowStart[I + 1]; ++s)
-      coarse.transposeSlots[s] = coarse.A.find(coarse.A.column[s], I);  // the pattern is symmetric
+  setTransferPattern(fine, coarse, coarseCount, nullptr, nullptr);
   levels_.push_back(std::move(coarse));
   return true;
 }

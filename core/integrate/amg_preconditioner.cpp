@@ -50,30 +50,51 @@ void residualAfterOneForwardSweep(const AmgHierarchy::Level& level, const Eigen:
 
 void AmgPreconditioner::analyze(const SystemMatrix& A) {
   // A's pattern is made of whole 3x3 blocks (SystemMatrix), symmetric: the blocks of row i are
-  // those of column block i (columns 3i .. 3i+2, which hold the same rows).
+  // those of column block i (columns 3i .. 3i+2, which hold the same rows), in increasing order.
+  // One pass over them beside each vertex's weak neighbours (sorted): every step of a tear meets
+  // this analysis, so it takes no search and no per-row allocation (measured at 64²: 3.4 ms with a
+  // binary search of the weak pairs per block, rows gathered and sorted again).
   const SystemMatrix::Sparse& source = A.matrix();
   const int* outer = source.outerIndexPtr();
   const int* rows = source.innerIndexPtr();
   const std::vector<std::pair<int, int>>& weak = A.weakPairs();  // (i < j), sorted
   const int n = A.vertexCount();
-  std::vector<std::vector<int>> columnsOfRow(n);
-  for (int i = 0; i < n; ++i)
-    for (int k = outer[3 * i]; k < outer[3 * i + 1]; k += 3) {
-      const int j = rows[k] / 3;
-      if (!std::binary_search(weak.begin(), weak.end(), std::make_pair(std::min(i, j), std::max(i, j))))
-        columnsOfRow[i].push_back(j);
+  // Each vertex's weak neighbours, increasing: the pairs (i, v), i < v, come before the (v, j).
+  std::vector<int> weakStart(n + 1, 0), weakNeighbour(2 * weak.size());
+  for (const auto& [i, j] : weak) {
+    ++weakStart[i + 1];
+    ++weakStart[j + 1];
+  }
+  for (int i = 0; i < n; ++i) weakStart[i + 1] += weakStart[i];
+  {
+    std::vector<int> fill(weakStart.begin(), weakStart.end() - 1);
+    for (const auto& [i, j] : weak) {
+      weakNeighbour[fill[i]++] = j;
+      weakNeighbour[fill[j]++] = i;
     }
-  finest_.setPattern(n, n, columnsOfRow);
+  }
+  finest_.blockRows = n;
+  finest_.blockColumns = n;
+  finest_.rowStart.assign(n + 1, 0);
+  finest_.column.clear();
   blockCode_.clear();
   diagonalSlot_.assign(n, -1);
   for (int i = 0; i < n; ++i) {
-    diagonalSlot_[i] = finest_.find(i, i);
+    int w = weakStart[i];
     for (int k = outer[3 * i]; k < outer[3 * i + 1]; k += 3) {
       const int j = rows[k] / 3;
-      const int slot = finest_.find(i, j);
-      blockCode_.push_back(slot >= 0 ? slot : j < i ? kDroppedFirstSeen : kDroppedSecondSeen);
+      while (w < weakStart[i + 1] && weakNeighbour[w] < j) ++w;
+      if (w < weakStart[i + 1] && weakNeighbour[w] == j) {
+        blockCode_.push_back(j < i ? kDroppedFirstSeen : kDroppedSecondSeen);
+        continue;
+      }
+      if (j == i) diagonalSlot_[i] = static_cast<int>(finest_.column.size());
+      blockCode_.push_back(static_cast<int>(finest_.column.size()));
+      finest_.column.push_back(j);
     }
+    finest_.rowStart[i + 1] = static_cast<int>(finest_.column.size());
   }
+  finest_.blocks.assign(finest_.column.size(), Mat3::Zero());
   compensation_.assign(n, Mat3::Zero());
   analyzedPatternVersion_ = A.patternVersion();
   analyzedSize_ = A.matrix().rows();

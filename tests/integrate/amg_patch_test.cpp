@@ -211,11 +211,13 @@ TEST(AmgPatch, ATearIsPatchedAndTheCgNeedsAboutTheIterationsOfAFreshBuild) {
 }
 
 TEST(AmgPatch, EveryPatchedLevelHoldsTheTransferOfItsAggregates) {
-  // Every level patched (none built anew below a size), so that the coarse levels' patches (seeds
-  // from the level above, holes in the numbering, coarse rows removed) are exercised too.
-  TornSheet sheet(24, 15);
+  // Every level patched (none built anew below a size or for the share it frees), so that the
+  // coarse levels' patches (seeds from the level above, holes in the numbering, coarse rows
+  // removed) are exercised too.
+  TornSheet sheet(20, 15);
   AmgPreconditioner::Settings settings;
   settings.hierarchy.patchMinimumVertices = 0;
+  settings.hierarchy.patchLimit = 1.0;
   settings.singlePrecisionCycle = false;
   AmgPreconditioner amg(settings);
   amg.prepare(sheet.A);
