@@ -4,8 +4,9 @@
 // & Brezina 1996, "Algebraic multigrid by smoothed aggregation for second and fourth order elliptic
 // problems":
 //   - strength of connection: block (i, j) is strong when |A_ij|_F >= theta sqrt(|A_ii|_F |A_jj|_F);
-//   - aggregation (Vanek et al., three passes): a vertex whose strong neighbours are all free roots
-//     an aggregate of itself and them; the rest join a neighbouring aggregate or form new ones.
+//   - aggregation (Vanek et al., three passes; amg_aggregation.h): a vertex whose strong neighbours
+//     are all free roots an aggregate of itself and them; the rest join a neighbouring aggregate
+//     or form new ones.
 //     A vertex without strong neighbours (a pinned vertex: its row is the identity) stays out of
 //     the coarse space and is left to the smoother, which solves it exactly;
 //   - tentative prolongator T: the three translations of each aggregate (T_iJ = I when vertex i is
@@ -24,7 +25,8 @@
 // always, the prolongators' smoothing only when asked (they may be kept from the last build while
 // the topology holds). Nothing is allocated by refresh(). patch() takes a pattern that changed
 // locally (a tear, a cut): it keeps the aggregates and rows away from the change and redoes the
-// rest (amg_patch.h), level by level, then the numbers.
+// rest (amg_patch.h), level by level, then the numbers. The patterns and index lists of a
+// transfer, whole or in part: amg_transfer_pattern.h.
 #include <vector>
 
 #include <Eigen/Cholesky>
