@@ -109,7 +109,7 @@ std::size_t ContactStage::heapBytes() const {
 
 std::size_t NonlocalStress::heapBytes() const {
   return weft::heapBytes(centroid_) + weft::heapBytes(area_) + weft::heapBytes(lip_) + weft::heapBytes(across_) + weft::heapBytes(neighbours_) +
-         weft::heapBytes(scale_) + weft::heapBytes(stamp_) + weft::heapBytes(region_) + weft::heapBytes(hot_) +
+         weft::heapBytes(scale_) + weft::heapBytes(stamp_) + weft::heapBytes(region_) + weft::heapBytes(hot_) + weft::heapBytes(pending_) + weft::heapBytes(pendingPlaces_) + weft::heapBytes(pendingMark_) +
          weft::heapBytes(needed_) + weft::heapBytes(vertexNeeded_) + weft::heapBytes(cellOf_) +
          weft::heapBytes(cellWeight_) + weft::heapBytes(cellMiddle_) + weft::heapBytes(cellReader_);
 }

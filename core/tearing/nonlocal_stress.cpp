@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace weft {
 
@@ -220,6 +221,9 @@ Mat2 NonlocalStress::averageAt(const std::vector<Mat2>& local, int t) const {
 
 void NonlocalStress::rebuild(const ClothMesh& mesh, double radius) {
   radius_ = radius;
+  pending_.clear();
+  pendingPlaces_.clear();
+  pendingMark_.assign(mesh.tris.size(), 0);
   centroid_.clear();
   area_.clear();
   lip_.clear();
@@ -239,6 +243,7 @@ void NonlocalStress::rebuild(const ClothMesh& mesh, double radius) {
 
 void NonlocalStress::average(const ClothMesh& mesh, const std::vector<Mat2>& local, double radius, double threshold,
                              std::vector<Mat2>& out, int threads) {
+  if (built_ && radius == radius_ && mesh.tris.size() == cachedTriangles_) rebuildPending(mesh);
   if (!built_ || radius != radius_ || mesh.tris.size() != cachedTriangles_) rebuild(mesh, radius);
   out = local;
   pack(local);
@@ -285,10 +290,16 @@ std::vector<int> NonlocalStress::patch(const ClothMesh& mesh, const std::vector<
   // Triangles the tear added are changed ones too, whether or not the caller listed them.
   std::vector<int> seeds = changed;
   for (std::size_t t = cachedTriangles_; t < mesh.tris.size(); ++t) seeds.push_back(static_cast<int>(t));
-  // Where the changed triangles were before the tear (a triangle the tear added was nowhere).
-  std::vector<Vec2> seedPlaces;
+  std::sort(seeds.begin(), seeds.end());
+  seeds.erase(std::unique(seeds.begin(), seeds.end()), seeds.end());
+  // Where each changed triangle was before the step's first tear touched it (a triangle a tear
+  // added was nowhere): the neighbourhoods that read it there are rebuilt at the next average.
+  pendingMark_.resize(mesh.tris.size(), 0);
   for (int t : seeds) {
-    if (static_cast<std::size_t>(t) < cachedTriangles_) seedPlaces.push_back(centroid_[t]);
+    if (pendingMark_[t]) continue;
+    pendingMark_[t] = 1;
+    pending_.push_back(t);
+    if (static_cast<std::size_t>(t) < cachedTriangles_) pendingPlaces_.push_back(centroid_[t]);
   }
   // A triangle's neighbours across its edges change when it or the one across an edge changed: the
   // seeds, the triangles across their edges before the tear (an edge the tear opened no longer
@@ -310,32 +321,49 @@ std::vector<int> NonlocalStress::patch(const ClothMesh& mesh, const std::vector<
     }
   }
   for (int t : rejoined) updateAcross(mesh, t);
-  for (int t : seeds) seedPlaces.push_back(centroid_[t]);
-  gatherAround(mesh, seeds, kPatchReach * radius_);
+  // The changed triangles' stresses (and new ones) into the packed copy the averages read, and
+  // their own neighbourhoods and averages on the torn mesh.
+  packed_.resize(local.size());
+  for (int t : seeds) packed_[t] = {local[t](0, 0), local[t](1, 1), local[t](0, 1)};
+  for (int t : seeds) {
+    buildNeighbours(mesh, t);
+    out[t] = averageAt(local, t);
+  }
+  cachedTriangles_ = mesh.tris.size();
+  return seeds;
+}
+
+void NonlocalStress::rebuildPending(const ClothMesh& mesh) {
+  if (pending_.empty()) return;
+  std::vector<Vec2> places = pendingPlaces_;
+  for (int t : pending_) places.push_back(centroid_[t]);
   // A neighbourhood is the walk from its triangle through triangles whose centroids lie within the
   // radius, weighted by those centroids and their areas: it can change only if a changed triangle
-  // lies (or lay) within the radius of its triangle, and its average only then too. The walk above
-  // reaches further (round crack ends); the triangles it found beyond that keep their lists and
-  // averages, bit for bit what a rebuild would give.
-  std::vector<int> dirty;
+  // lies (or lay) within the radius of its triangle. The walk reaches further (round crack ends);
+  // the triangles it found beyond that keep their lists, bit for bit what a rebuild would give.
+  gatherAround(mesh, pending_, kPatchReach * radius_);
   const double radius2 = radius_ * radius_;
+  Vec2 low = Vec2::Constant(std::numeric_limits<double>::infinity()), high = -low;
+  for (const Vec2& place : places) {
+    low = low.cwiseMin(place);
+    high = high.cwiseMax(place);
+  }
+  low.array() -= radius_;
+  high.array() += radius_;
+  std::vector<int> dirty;
   for (int t : region_) {
     const Vec2 centre = centroid_[t];
-    if (std::any_of(seedPlaces.begin(), seedPlaces.end(),
+    if ((centre.array() < low.array()).any() || (centre.array() > high.array()).any()) continue;  // far from all
+    if (std::any_of(places.begin(), places.end(),
                     [&](const Vec2& place) { return (place - centre).squaredNorm() <= radius2; })) {
       dirty.push_back(t);
     }
   }
   std::sort(dirty.begin(), dirty.end());
-  // The changed triangles' stresses (and new ones) into the packed copy the averages read.
-  packed_.resize(local.size());
-  for (int t : seeds) packed_[t] = {local[t](0, 0), local[t](1, 1), local[t](0, 1)};
-  for (int t : dirty) {
-    buildNeighbours(mesh, t);
-    out[t] = averageAt(local, t);
-  }
-  cachedTriangles_ = mesh.tris.size();
-  return dirty;
+  for (int t : dirty) buildNeighbours(mesh, t);
+  for (int t : pending_) pendingMark_[t] = 0;
+  pending_.clear();
+  pendingPlaces_.clear();
 }
 
 }  // namespace weft

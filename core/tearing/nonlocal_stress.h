@@ -29,7 +29,7 @@
 // neighbourhood holds one whose own stress could reach `threshold` is averaged; elsewhere the local
 // stress is kept (it is below the threshold too). The neighbourhoods and their weights depend on
 // the mesh alone, not on the stress, so they are kept from step to step (a walk per triangle cost
-// 14 ms a step at 64^2, ~100 triangles per disc) and rebuilt around each tear by `patch`: a step
+// 14 ms a step at 64^2, ~100 triangles per disc) and rebuilt around a step's tears (`patch`): a step
 // costs one pass over the triangles plus, where the cloth is hot, one pass over their lists. A
 // list holds at most 256 triangles: on a mesh much finer than the radius the disc's outer part is
 // read at a coarser spacing (nonlocal_stress.cpp, kMaxNeighbours), so memory and time per triangle
@@ -66,13 +66,19 @@ class NonlocalStress {
                std::vector<Mat2>& out, int threads = 1);
   // After a tear changed the listed triangles (their local stress is already updated; triangles
   // the tear added need not be listed; every other triangle's local stress is as the last call
-  // read it): the neighbourhoods and averages that depend on them,
-  // recomputed on the new mesh. Returns the triangles whose average was recomputed. Follows an
-  // `average` call on the same mesh.
+  // read it): their own neighbourhoods and averages on the new mesh, now; the neighbourhoods of the
+  // triangles round them that read them, at the next `average` call, once for all of a step's
+  // tears (a crack running ten elements in a step changed each list near it ten times: rebuilding
+  // them after every tear was most of a tearing step's stage). Until then those triangles keep the
+  // step's averages, as every triangle keeps the step's stress until the next solve moves the
+  // cloth. Returns the triangles whose average was recomputed (the changed and added ones),
+  // increasing. Follows an `average` call on the same mesh.
   std::vector<int> patch(const ClothMesh& mesh, const std::vector<Mat2>& local, const std::vector<int>& changed,
                          std::vector<Mat2>& out);
 
  private:
+  // The neighbourhoods `patch` left for the next average (rebuildPending's walk).
+  void rebuildPending(const ClothMesh& mesh);
   // The cache from scratch: every triangle's centroid, area, lip flag and neighbourhood.
   void rebuild(const ClothMesh& mesh, double radius);
   // The triangles whose centroid lies within `reach` of triangle t's, connected to it through
@@ -95,6 +101,9 @@ class NonlocalStress {
   double radius_ = 0.0;
   std::size_t cachedTriangles_ = 0;  // the triangle count the cache was built or last patched for
   bool built_ = false;
+  std::vector<int> pending_;          // triangles patched since the last average, in order first patched
+  std::vector<Vec2> pendingPlaces_;   // where those that existed before were then
+  std::vector<char> pendingMark_;     // per triangle: in pending_
   std::vector<Vec2> centroid_;   // material space, per triangle
   std::vector<double> area_;     // rest area, per triangle
   std::vector<char> lip_;        // per triangle: it has a torn border edge (left out of the averages)
