@@ -122,8 +122,11 @@ class NonlocalStress {
   std::vector<double> cellWeight_;
   std::vector<Vec2> cellMiddle_;
   std::vector<int> cellReader_;
+  using Double2 = double __attribute__((vector_size(16)));  // GCC's vector extension (SSE2 on x86-64)
+  // xx and yy side by side, so that one vector multiply and add take both (nonlocal_stress.cpp).
   struct PackedStress {
-    double xx, yy, xy;
+    Double2 xxyy;
+    double xy, unused;
   };
   std::vector<PackedStress> packed_;  // the local stresses the averages read (see averageAt)
   std::vector<char> hot_;        // per triangle, this call: its local stress reaches the threshold
