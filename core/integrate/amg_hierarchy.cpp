@@ -98,7 +98,7 @@ bool AmgHierarchy::coarsen(int l) {
     return false;
   }
   Level coarse;
-  setTransferPattern(fine, coarse, coarseCount, nullptr, nullptr);
+  setTransferPattern(fine, coarse, coarseCount, nullptr, nullptr, l == 0 ? finestProduct_ : nullptr);
   levels_.push_back(std::move(coarse));
   return true;
 }
@@ -150,7 +150,7 @@ void AmgHierarchy::smoothProlongator(Level& level, int threads) {
 void AmgHierarchy::galerkinProduct(int l, int threads) {
   Level& fine = levels_[l];
   Level& coarse = levels_[l + 1];
-  const BlockSparseMatrix& A = fine.A;
+  const BlockSparseMatrix& A = l == 0 && finestProduct_ != nullptr ? *finestProduct_ : fine.A;
   const BlockSparseMatrix& P = fine.P;
   BlockSparseMatrix& AP = fine.AP;
   AP.setZero();

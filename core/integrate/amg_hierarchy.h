@@ -97,6 +97,11 @@ class AmgHierarchy {
   // or the change is not local (AmgSettings::patchLimit).
   bool patch(const BlockSparseMatrix& finest, const BlockPattern& previousFinest, int threads = 1);
 
+  // The operator whose Galerkin product P^T B P makes the first coarse level, in place of the
+  // finest level's own (which still decides the aggregates, P and the smoother): A with the
+  // couplings the finest operator approximates away. Same rows and values kept up to date by the
+  // caller (it must outlive the hierarchy's next build or refresh). nullptr: the finest's own.
+  void setFinestProductOperator(const BlockSparseMatrix* operatorB) { finestProduct_ = operatorB; }
   int levelCount() const { return static_cast<int>(levels_.size()); }
   const Level& level(int l) const { return levels_[l]; }
   Level& level(int l) { return levels_[l]; }
@@ -116,6 +121,7 @@ class AmgHierarchy {
   void factorCoarsest();
 
   AmgSettings settings_;
+  const BlockSparseMatrix* finestProduct_ = nullptr;
   std::vector<Level> levels_;
   Eigen::MatrixXd coarsestDense_;
   Eigen::LLT<Eigen::MatrixXd> coarsestFactor_;

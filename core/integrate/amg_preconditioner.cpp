@@ -1,6 +1,7 @@
 #include "integrate/amg_preconditioner.h"
 
 #include <algorithm>
+#include <cstdlib>
 
 namespace weft {
 namespace {
@@ -96,6 +97,15 @@ void AmgPreconditioner::analyze(const SystemMatrix& A) {
   }
   finest_.blocks.assign(finest_.column.size(), Mat3::Zero());
   compensation_.assign(n, Mat3::Zero());
+  whole_.blockRows = n;
+  whole_.blockColumns = n;
+  whole_.rowStart.assign(n + 1, 0);
+  whole_.column.clear();
+  for (int i = 0; i < n; ++i) {
+    for (int k = outer[3 * i]; k < outer[3 * i + 1]; k += 3) whole_.column.push_back(rows[k] / 3);
+    whole_.rowStart[i + 1] = static_cast<int>(whole_.column.size());
+  }
+  whole_.blocks.assign(whole_.column.size(), Mat3::Zero());
   analyzedPatternVersion_ = A.patternVersion();
   analyzedSize_ = A.matrix().rows();
 }
@@ -135,6 +145,18 @@ void AmgPreconditioner::gather(const SystemMatrix& A) {
   }
   for (int i = 0; i < n; ++i)
     if (diagonalSlot_[i] >= 0) finest_.blocks[diagonalSlot_[i]] += compensation_[i];
+  if (std::getenv("WEFT_WING_GALERKIN")) {
+    int slot = 0;
+    for (int i = 0; i < n; ++i) {
+      const double* v[3] = {values + outer[3 * i], values + outer[3 * i + 1], values + outer[3 * i + 2]};
+      const int length = outer[3 * i + 1] - outer[3 * i];
+      for (int k = 0; k < length; k += 3, ++slot) {
+        Mat3& block = whole_.blocks[slot];
+        for (int r = 0; r < 3; ++r)
+          for (int c = 0; c < 3; ++c) block(r, c) = v[r][k + c];
+      }
+    }
+  }
 }
 
 void AmgPreconditioner::prepare(const SystemMatrix& A) {
@@ -146,8 +168,10 @@ void AmgPreconditioner::prepare(const SystemMatrix& A) {
     analyze(A);
   }
   gather(A);
+  const bool wings = std::getenv("WEFT_WING_GALERKIN") != nullptr;
+  hierarchy_.setFinestProductOperator(wings ? &whole_ : nullptr);
   if (patternChanged || hierarchy_.levelCount() == 0) {
-    if (settings_.patchAfterPatternChange && hierarchy_.patch(finest_, previousFinest, threads_)) {
+    if (!wings && settings_.patchAfterPatternChange && hierarchy_.patch(finest_, previousFinest, threads_)) {
       ++patchedSetups_;
     } else {
       hierarchy_.build(finest_);

@@ -68,6 +68,7 @@ class AmgPreconditioner final : public Preconditioner {
   AmgHierarchy hierarchy_;
   AmgFloatCycle floatCycle_;
   BlockSparseMatrix finest_;
+  BlockSparseMatrix whole_;  // A itself, every block: the first coarse level's Galerkin operator (EXPERIMENT)
   // Per block of A in its storage order (column block by column block): its slot in finest_, or
   // one of these for a dropped (weak) pair.
   static constexpr int kDroppedFirstSeen = -1;   // block (j, i) of column block i, j < i: compensated here
