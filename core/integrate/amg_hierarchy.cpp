@@ -43,7 +43,9 @@ void AmgHierarchy::buildBelow(int l) {
   }
 }
 
-bool AmgHierarchy::patch(const BlockSparseMatrix& finest, const BlockPattern& previousFinest, int threads) {
+bool AmgHierarchy::patch(const BlockSparseMatrix& finest, const BlockPattern& previousFinest, int threads,
+                         const BlockPattern* previousProduct) {
+  if (finestProduct_ != nullptr && previousProduct == nullptr) return false;  // cannot tell what changed
   if (levels_.size() < 2) return false;  // nothing coarsened: a build is as cheap
   levels_[0].A = finest;
   computeDiagonal(levels_[0], threads);
@@ -53,7 +55,10 @@ bool AmgHierarchy::patch(const BlockSparseMatrix& finest, const BlockPattern& pr
   std::vector<int> seeds;
   for (int l = 0;; ++l) {
     const bool large = l == 0 || levels_[l].A.blockRows >= settings_.patchMinimumVertices;
-    if (l + 1 < levelCount() && large && patchTransfer(levels_[l], levels_[l + 1], *previous, seeds, settings_, transfer)) {
+    const bool product = l == 0 && finestProduct_ != nullptr;
+    if (l + 1 < levelCount() && large &&
+        patchTransfer(levels_[l], levels_[l + 1], *previous, seeds, settings_, transfer, product ? finestProduct_ : nullptr,
+                      product ? previousProduct : nullptr)) {
       smoothProlongator(levels_[l], threads);  // omega kept from the build
       galerkinProduct(l, threads);
       computeDiagonal(levels_[l + 1], threads);

@@ -95,7 +95,9 @@ class AmgHierarchy {
   // (AmgSettings::patchMinimumVertices), builds the smaller ones anew, and redoes the numbers.
   // Returns false, leaving the hierarchy to be built (build()), when there is no coarse level yet
   // or the change is not local (AmgSettings::patchLimit).
-  bool patch(const BlockSparseMatrix& finest, const BlockPattern& previousFinest, int threads = 1);
+  // `previousProduct`: the finest product operator's pattern before the change (needed when one is set).
+  bool patch(const BlockSparseMatrix& finest, const BlockPattern& previousFinest, int threads = 1,
+             const BlockPattern* previousProduct = nullptr);
 
   // The operator whose Galerkin product P^T B P makes the first coarse level, in place of the
   // finest level's own (which still decides the aggregates, P and the smoother): A with the
