@@ -43,7 +43,9 @@ void AmgHierarchy::buildBelow(int l) {
   }
 }
 
-bool AmgHierarchy::patch(const BlockSparseMatrix& finest, const BlockPattern& previousFinest, int threads) {
+bool AmgHierarchy::patch(const BlockSparseMatrix& finest, const BlockPattern& previousFinest, int threads,
+                         const BlockPattern* previousProduct) {
+  if (finestProduct_ != nullptr && previousProduct == nullptr) return false;  // cannot tell what changed
   if (levels_.size() < 2) return false;  // nothing coarsened: a build is as cheap
   levels_[0].A = finest;
   computeDiagonal(levels_[0], threads);
@@ -53,7 +55,10 @@ bool AmgHierarchy::patch(const BlockSparseMatrix& finest, const BlockPattern& pr
   std::vector<int> seeds;
   for (int l = 0;; ++l) {
     const bool large = l == 0 || levels_[l].A.blockRows >= settings_.patchMinimumVertices;
-    if (l + 1 < levelCount() && large && patchTransfer(levels_[l], levels_[l + 1], *previous, seeds, settings_, transfer)) {
+    const bool product = l == 0 && finestProduct_ != nullptr;
+    if (l + 1 < levelCount() && large &&
+        patchTransfer(levels_[l], levels_[l + 1], *previous, seeds, settings_, transfer, product ? finestProduct_ : nullptr,
+                      product ? previousProduct : nullptr)) {
       smoothProlongator(levels_[l], threads);  // omega kept from the build
       galerkinProduct(l, threads);
       computeDiagonal(levels_[l + 1], threads);
@@ -98,7 +103,7 @@ bool AmgHierarchy::coarsen(int l) {
     return false;
   }
   Level coarse;
-  setTransferPattern(fine, coarse, coarseCount, nullptr, nullptr);
+  setTransferPattern(fine, coarse, coarseCount, nullptr, nullptr, l == 0 ? finestProduct_ : nullptr);
   levels_.push_back(std::move(coarse));
   return true;
 }
@@ -150,7 +155,7 @@ void AmgHierarchy::smoothProlongator(Level& level, int threads) {
 void AmgHierarchy::galerkinProduct(int l, int threads) {
   Level& fine = levels_[l];
   Level& coarse = levels_[l + 1];
-  const BlockSparseMatrix& A = fine.A;
+  const BlockSparseMatrix& A = l == 0 && finestProduct_ != nullptr ? *finestProduct_ : fine.A;
   const BlockSparseMatrix& P = fine.P;
   BlockSparseMatrix& AP = fine.AP;
   AP.setZero();

@@ -95,8 +95,15 @@ class AmgHierarchy {
   // (AmgSettings::patchMinimumVertices), builds the smaller ones anew, and redoes the numbers.
   // Returns false, leaving the hierarchy to be built (build()), when there is no coarse level yet
   // or the change is not local (AmgSettings::patchLimit).
-  bool patch(const BlockSparseMatrix& finest, const BlockPattern& previousFinest, int threads = 1);
+  // `previousProduct`: the finest product operator's pattern before the change (needed when one is set).
+  bool patch(const BlockSparseMatrix& finest, const BlockPattern& previousFinest, int threads = 1,
+             const BlockPattern* previousProduct = nullptr);
 
+  // The operator whose Galerkin product P^T B P makes the first coarse level, in place of the
+  // finest level's own (which still decides the aggregates, P and the smoother): A with the
+  // couplings the finest operator approximates away. Same rows and values kept up to date by the
+  // caller (it must outlive the hierarchy's next build or refresh). nullptr: the finest's own.
+  void setFinestProductOperator(const BlockSparseMatrix* operatorB) { finestProduct_ = operatorB; }
   int levelCount() const { return static_cast<int>(levels_.size()); }
   const Level& level(int l) const { return levels_[l]; }
   Level& level(int l) { return levels_[l]; }
@@ -116,6 +123,7 @@ class AmgHierarchy {
   void factorCoarsest();
 
   AmgSettings settings_;
+  const BlockSparseMatrix* finestProduct_ = nullptr;
   std::vector<Level> levels_;
   Eigen::MatrixXd coarsestDense_;
   Eigen::LLT<Eigen::MatrixXd> coarsestFactor_;

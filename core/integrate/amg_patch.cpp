@@ -20,8 +20,11 @@ bool sameRow(const BlockPattern& previous, const BlockSparseMatrix& A, int i) {
 }  // namespace
 
 bool patchTransfer(AmgHierarchy::Level& fine, AmgHierarchy::Level& coarse, const BlockPattern& previousFine,
-                   const std::vector<int>& seeds, const AmgSettings& settings, TransferPatch& out) {
+                   const std::vector<int>& seeds, const AmgSettings& settings, TransferPatch& out,
+                   const BlockSparseMatrix* product, const BlockPattern* previousProduct) {
   const BlockSparseMatrix& A = fine.A;
+  const BlockSparseMatrix& B = product != nullptr ? *product : fine.A;  // A P's operator
+  const BlockPattern& previousB = product != nullptr ? *previousProduct : previousFine;
   const int n = A.blockRows;
   const int previousRows = previousFine.rows();
   const std::vector<int>& previousAggregateOf = fine.aggregateOf;
@@ -105,9 +108,9 @@ bool patchTransfer(AmgHierarchy::Level& fine, AmgHierarchy::Level& coarse, const
     for (int k = A.rowStart[i]; k < A.rowStart[i + 1] && !derive; ++k) derive = idChanged[A.column[k]];
     rows.p[i] = derive;
   }
-  for (int i = 0; i < n; ++i) {
-    bool derive = rows.p[i];
-    for (int k = A.rowStart[i]; k < A.rowStart[i + 1] && !derive; ++k) derive = rows.p[A.column[k]];
+  for (int i = 0; i < n; ++i) {  // A P's row i reads B's row i and the P rows of its columns
+    bool derive = rows.p[i] || i >= previousB.rows() || !sameRow(previousB, B, i);
+    for (int k = B.rowStart[i]; k < B.rowStart[i + 1] && !derive; ++k) derive = rows.p[B.column[k]];
     rows.product[i] = derive;
   }
   for (int i = 0; i < n; ++i) {  // a derived A P row's P row, as it will be: its aggregate and its neighbours'
@@ -123,7 +126,7 @@ bool patchTransfer(AmgHierarchy::Level& fine, AmgHierarchy::Level& coarse, const
     for (int p = previous.P.rowStart[i]; p < previous.P.rowStart[i + 1]; ++p)
       if (previous.P.column[p] < coarseCount) rows.coarse[previous.P.column[p]] = 1;
   }
-  setTransferPattern(fine, coarse, coarseCount, &rows, &previous);
+  setTransferPattern(fine, coarse, coarseCount, &rows, &previous, product);
 
   out.previousCoarse = std::move(previous.Ac);
   out.freedVertices = static_cast<int>(freeVertices.size());

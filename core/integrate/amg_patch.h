@@ -45,7 +45,10 @@ struct TransferPatch {
 // vertices to aggregate again although their rows did not change. Returns false, with nothing
 // changed, when the patch would free more than settings.patchLimit of the fine vertices or the
 // coarsening would stall: the caller builds this transfer anew.
+// `product` / `previousProduct`: the operator whose product with P makes A P (the finest level's
+// AmgHierarchy::setFinestProductOperator), as it is and as its pattern was; null: fine.A.
 bool patchTransfer(AmgHierarchy::Level& fine, AmgHierarchy::Level& coarse, const BlockPattern& previousFine,
-                   const std::vector<int>& seeds, const AmgSettings& settings, TransferPatch& out);
+                   const std::vector<int>& seeds, const AmgSettings& settings, TransferPatch& out,
+                   const BlockSparseMatrix* product = nullptr, const BlockPattern* previousProduct = nullptr);
 
 }  // namespace weft

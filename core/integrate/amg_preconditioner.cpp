@@ -1,6 +1,7 @@
 #include "integrate/amg_preconditioner.h"
 
 #include <algorithm>
+#include <cstdlib>
 
 namespace weft {
 namespace {
@@ -96,11 +97,20 @@ void AmgPreconditioner::analyze(const SystemMatrix& A) {
   }
   finest_.blocks.assign(finest_.column.size(), Mat3::Zero());
   compensation_.assign(n, Mat3::Zero());
+  whole_.blockRows = n;
+  whole_.blockColumns = n;
+  whole_.rowStart.assign(n + 1, 0);
+  whole_.column.clear();
+  for (int i = 0; i < n; ++i) {
+    for (int k = outer[3 * i]; k < outer[3 * i + 1]; k += 3) whole_.column.push_back(rows[k] / 3);
+    whole_.rowStart[i + 1] = static_cast<int>(whole_.column.size());
+  }
+  whole_.blocks.assign(whole_.column.size(), Mat3::Zero());
   analyzedPatternVersion_ = A.patternVersion();
   analyzedSize_ = A.matrix().rows();
 }
 
-void AmgPreconditioner::gather(const SystemMatrix& A) {
+void AmgPreconditioner::gather(const SystemMatrix& A, bool fillWhole) {
   // One pass over A, column block by column block: the finest level's row i is column block i
   // (A is symmetric), each block read as three runs of three values. A dropped pair (j, i), j < i,
   // met in column block i, adds its compensation (strong_coupling_approximation.h) to both
@@ -135,21 +145,49 @@ void AmgPreconditioner::gather(const SystemMatrix& A) {
   }
   for (int i = 0; i < n; ++i)
     if (diagonalSlot_[i] >= 0) finest_.blocks[diagonalSlot_[i]] += compensation_[i];
+  if (!fillWhole) return;
+  // A itself into whole_, and the wings' share of the off-diagonal coupling (block Frobenius norms).
+  double weakNorms = 0.0, offDiagonalNorms = 0.0;
+  int slot = 0;
+  code = blockCode_.data();
+  for (int i = 0; i < n; ++i) {
+    const double* v[3] = {values + outer[3 * i], values + outer[3 * i + 1], values + outer[3 * i + 2]};
+    const int length = outer[3 * i + 1] - outer[3 * i];
+    for (int k = 0; k < length; k += 3, ++slot, ++code) {
+      Mat3& block = whole_.blocks[slot];
+      for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c) block(r, c) = v[r][k + c];
+      if (whole_.column[slot] == i) continue;
+      const double norm = block.norm();
+      offDiagonalNorms += norm;
+      if (*code < 0) weakNorms += norm;
+    }
+  }
+  wingShare_ = offDiagonalNorms > 0.0 ? weakNorms / offDiagonalNorms : 0.0;
 }
 
 void AmgPreconditioner::prepare(const SystemMatrix& A) {
   const bool patternChanged = A.patternVersion() != analyzedPatternVersion_ || A.matrix().rows() != analyzedSize_;
-  BlockPattern previousFinest;
+  BlockPattern previousFinest, previousWhole;
   if (patternChanged) {
     previousFinest.rowStart = std::move(finest_.rowStart);
     previousFinest.column = std::move(finest_.column);
+    previousWhole.rowStart = std::move(whole_.rowStart);
+    previousWhole.column = std::move(whole_.column);
     analyze(A);
   }
-  gather(A);
-  if (patternChanged || hierarchy_.levelCount() == 0) {
-    if (settings_.patchAfterPatternChange && hierarchy_.patch(finest_, previousFinest, threads_)) {
+  const bool setUp = patternChanged || hierarchy_.levelCount() == 0;
+  gather(A, wings_ || setUp);
+  if (setUp) {
+    hierarchy_.setFinestProductOperator(wings_ ? &whole_ : nullptr);
+    if (hierarchy_.levelCount() > 0 && settings_.patchAfterPatternChange &&
+        hierarchy_.patch(finest_, previousFinest, threads_, wings_ ? &previousWhole : nullptr)) {
       ++patchedSetups_;
     } else {
+      // A build decides whether the wings enter the first Galerkin product (see Settings); a
+      // patch keeps the decision (the hierarchy's patterns follow it).
+      wings_ = wingShare_ >= settings_.wingShareThreshold;
+      hierarchy_.setFinestProductOperator(wings_ ? &whole_ : nullptr);
       hierarchy_.build(finest_);
       ++fullSetups_;
     }

@@ -41,6 +41,12 @@ class AmgPreconditioner final : public Preconditioner {
     int smoothingSweeps = 1;  // block Gauss-Seidel sweeps before and after each coarse correction
     bool singlePrecisionCycle = true;  // the V-cycle in float (amg_float_cycle.h); the setup stays in double
     bool patchAfterPatternChange = true;  // a pattern change patches the hierarchy (else: built anew)
+    // The first coarse level's Galerkin product takes A itself, the bending hinges' wing couplings
+    // included, when their share of A's off-diagonal block norms is at least this at a build (the
+    // aggregates, P and the finest sweeps stay on the approximation). On finer meshes bending grows
+    // against the membrane and the coarse level built without the wings loses the bending modes
+    // (docs/solver.md, "Why the iterations double at 256²": 52 -> 36 CG iterations at 256²).
+    double wingShareThreshold = 0.0008;
   };
 
   AmgPreconditioner() : AmgPreconditioner(Settings{}) {}
@@ -57,17 +63,23 @@ class AmgPreconditioner final : public Preconditioner {
   int fullSetups() const { return fullSetups_; }
   // Pattern changes met by patching the hierarchy (AmgHierarchy::patch).
   int patchedSetups() const { return patchedSetups_; }
+  // The wings are in the first coarse level's Galerkin product (Settings::wingShareThreshold).
+  bool wingsInGalerkinProduct() const { return wings_; }
   const AmgHierarchy& hierarchy() const { return hierarchy_; }
 
  private:
   void analyze(const SystemMatrix& A);
-  void gather(const SystemMatrix& A);
+  // A's values into finest_ (and, with fillWhole, into whole_, measuring wingShare_).
+  void gather(const SystemMatrix& A, bool fillWhole);
   void cycle(int l, const Eigen::VectorXd& b, Eigen::VectorXd& x);
 
   Settings settings_;
   AmgHierarchy hierarchy_;
   AmgFloatCycle floatCycle_;
   BlockSparseMatrix finest_;
+  BlockSparseMatrix whole_;  // A itself, every block: the first coarse level's Galerkin operator when wings_
+  bool wings_ = false;       // the wings enter the first Galerkin product (Settings::wingShareThreshold)
+  double wingShare_ = 0.0;   // their share of the off-diagonal block norms, at the last gather that measured it
   // Per block of A in its storage order (column block by column block): its slot in finest_, or
   // one of these for a dropped (weak) pair.
   static constexpr int kDroppedFirstSeen = -1;   // block (j, i) of column block i, j < i: compensated here

@@ -61,8 +61,10 @@ PreviousTransfer takeTransfer(AmgHierarchy::Level& fine, AmgHierarchy::Level& co
 }
 
 void setTransferPattern(AmgHierarchy::Level& fine, AmgHierarchy::Level& coarse, int coarseCount,
-                        const TransferRows* rows, const PreviousTransfer* previous) {
+                        const TransferRows* rows, const PreviousTransfer* previous,
+                        const BlockSparseMatrix* productOperator) {
   const BlockSparseMatrix& A = fine.A;
+  const BlockSparseMatrix& B = productOperator != nullptr ? *productOperator : fine.A;  // A P's A
   const int n = A.blockRows;
   const std::vector<int>& aggregateOf = fine.aggregateOf;
   const auto derive = [&](const std::vector<char> TransferRows::*flags, int i) { return rows == nullptr || (rows->*flags)[i]; };
@@ -116,8 +118,8 @@ void setTransferPattern(AmgHierarchy::Level& fine, AmgHierarchy::Level& coarse, 
       continue;
     }
     columns.clear();
-    for (int k = A.rowStart[i]; k < A.rowStart[i + 1]; ++k) {
-      const int j = A.column[k];
+    for (int k = B.rowStart[i]; k < B.rowStart[i + 1]; ++k) {
+      const int j = B.column[k];
       for (int p = P.rowStart[j]; p < P.rowStart[j + 1]; ++p) {
         const int K = P.column[p];
         if (marker[K] == i) continue;
@@ -138,8 +140,8 @@ void setTransferPattern(AmgHierarchy::Level& fine, AmgHierarchy::Level& coarse, 
         fine.productSlots.push_back(previous->productSlots[s] + shift);
     } else {
       for (int w = AP.rowStart[i]; w < AP.rowStart[i + 1]; ++w) position[AP.column[w]] = w;
-      for (int k = A.rowStart[i]; k < A.rowStart[i + 1]; ++k) {
-        const int j = A.column[k];
+      for (int k = B.rowStart[i]; k < B.rowStart[i + 1]; ++k) {
+        const int j = B.column[k];
         for (int p = P.rowStart[j]; p < P.rowStart[j + 1]; ++p) fine.productSlots.push_back(position[P.column[p]]);
       }
     }

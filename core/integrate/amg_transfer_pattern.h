@@ -41,7 +41,10 @@ PreviousTransfer takeTransfer(AmgHierarchy::Level& fine, AmgHierarchy::Level& co
 // Sets fine.P, fine.AP, coarse.A's pattern (values zero) and the index lists of both levels from
 // fine.A's pattern and fine.aggregateOf (ids 0 .. coarseCount - 1). `rows` null: every row
 // derived (`previous` unused); else the rows not marked are copied from `previous`.
+// `productOperator`, if given, is the operator whose product with P makes A P (and so the coarse
+// operator), in place of fine.A (same rows): fine.A still decides P.
 void setTransferPattern(AmgHierarchy::Level& fine, AmgHierarchy::Level& coarse, int coarseCount,
-                        const TransferRows* rows, const PreviousTransfer* previous);
+                        const TransferRows* rows, const PreviousTransfer* previous,
+                        const BlockSparseMatrix* productOperator = nullptr);
 
 }  // namespace weft

@@ -137,10 +137,13 @@ std::set<std::pair<int, int>> patternOf(const BlockSparseMatrix& M) {
 // the (patched) hierarchy holds: every coarse vertex has fine vertices; P's pattern is the
 // aggregates of each vertex and its neighbours and its values (I - omega D^-1 A) T; the coarse
 // operator's pattern is that of P^T A P and its values the symmetrized product.
-void expectConsistentTransfer(const AmgHierarchy& hierarchy, int l) {
+// `product`: the operator the first Galerkin product takes instead of the level's own (the system
+// matrix with its wings, AmgPreconditioner::Settings::wingShareThreshold); P still comes from A.
+void expectConsistentTransfer(const AmgHierarchy& hierarchy, int l, const BlockSparseMatrix* product = nullptr) {
   const AmgHierarchy::Level& fine = hierarchy.level(l);
   const AmgHierarchy::Level& coarse = hierarchy.level(l + 1);
   const BlockSparseMatrix& A = fine.A;
+  const BlockSparseMatrix& B = product != nullptr ? *product : fine.A;
   const int n = A.blockRows, coarseCount = coarse.A.blockRows;
   ASSERT_EQ(static_cast<int>(fine.aggregateOf.size()), n) << "level " << l;
   std::vector<int> members(coarseCount, 0);
@@ -158,13 +161,13 @@ void expectConsistentTransfer(const AmgHierarchy& hierarchy, int l) {
       if (fine.aggregateOf[A.column[k]] >= 0) expectedP.emplace(i, fine.aggregateOf[A.column[k]]);
   }
   EXPECT_EQ(patternOf(fine.P), expectedP) << "P of level " << l;
-  // P^T A P: (I, K) for every i with P(i, I), j with A(i, j), and P(j, K).
+  // P^T B P: (I, K) for every i with P(i, I), j with B(i, j), and P(j, K).
   std::vector<std::vector<int>> rowsOfP(n);
   for (const auto& [i, I] : expectedP) rowsOfP[i].push_back(I);
   for (int i = 0; i < n; ++i)
     for (const int I : rowsOfP[i])
-      for (int k = A.rowStart[i]; k < A.rowStart[i + 1]; ++k)
-        for (const int K : rowsOfP[A.column[k]]) expectedAc.emplace(I, K);
+      for (int k = B.rowStart[i]; k < B.rowStart[i + 1]; ++k)
+        for (const int K : rowsOfP[B.column[k]]) expectedAc.emplace(I, K);
   EXPECT_EQ(patternOf(coarse.A), expectedAc) << "coarse operator of level " << l + 1;
 
   Eigen::MatrixXd T = Eigen::MatrixXd::Zero(3 * n, 3 * coarseCount);
@@ -178,8 +181,8 @@ void expectConsistentTransfer(const AmgHierarchy& hierarchy, int l) {
   EXPECT_LE((dense(fine.P) - expectedPValues).cwiseAbs().maxCoeff(), 1e-12 * expectedPValues.cwiseAbs().maxCoeff())
       << "P of level " << l;
   const Eigen::MatrixXd P = dense(fine.P);
-  const Eigen::MatrixXd product = P.transpose() * denseA * P;
-  const Eigen::MatrixXd galerkin = 0.5 * (product + product.transpose());
+  const Eigen::MatrixXd galerkinProduct = P.transpose() * dense(B) * P;
+  const Eigen::MatrixXd galerkin = 0.5 * (galerkinProduct + galerkinProduct.transpose());
   EXPECT_LE((dense(coarse.A) - galerkin).cwiseAbs().maxCoeff(), 1e-10 * galerkin.cwiseAbs().maxCoeff())
       << "coarse operator of level " << l + 1;
 }
@@ -229,6 +232,51 @@ TEST(AmgPatch, EveryPatchedLevelHoldsTheTransferOfItsAggregates) {
     for (int l = 0; l + 1 < amg.hierarchy().levelCount(); ++l) expectConsistentTransfer(amg.hierarchy(), l);
   }
   EXPECT_EQ(amg.fullSetups(), 1);
+}
+
+// The system matrix as whole 3x3 blocks, every block (the wings too), as AmgPreconditioner reads it.
+BlockSparseMatrix wholeBlocks(const SystemMatrix& A) {
+  const SystemMatrix::Sparse& M = A.matrix();
+  BlockSparseMatrix B;
+  const int n = A.vertexCount();
+  std::vector<std::vector<int>> columns(n);
+  for (int i = 0; i < n; ++i)
+    for (int k = M.outerIndexPtr()[3 * i]; k < M.outerIndexPtr()[3 * i + 1]; k += 3) columns[i].push_back(M.innerIndexPtr()[k] / 3);
+  B.setPattern(n, n, columns);
+  for (int i = 0; i < n; ++i)
+    for (int k = B.rowStart[i]; k < B.rowStart[i + 1]; ++k)
+      for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c) B.blocks[k](r, c) = M.coeff(3 * i + r, 3 * B.column[k] + c);
+  return B;
+}
+
+TEST(AmgPatch, WithTheWingsInTheGalerkinProductEveryPatchedLevelStillHoldsItsTransfer) {
+  // The first coarse level as P^T A P with A's wing couplings (forced on: a 20² sheet's wings are
+  // far below the default threshold), patched through tears that change the wings too.
+  TornSheet sheet(20, 15);
+  AmgPreconditioner::Settings settings;
+  settings.hierarchy.patchMinimumVertices = 0;
+  settings.hierarchy.patchLimit = 1.0;
+  settings.singlePrecisionCycle = false;
+  settings.wingShareThreshold = 0.0;
+  AmgPreconditioner amg(settings);
+  amg.prepare(sheet.A);
+  ASSERT_TRUE(amg.wingsInGalerkinProduct());
+  ASSERT_GE(amg.hierarchy().levelCount(), 3);
+  BlockSparseMatrix whole = wholeBlocks(sheet.A);
+  expectConsistentTransfer(amg.hierarchy(), 0, &whole);
+  for (int round = 1; round <= 4; ++round) {
+    sheet.tear(2, 30 + round);
+    amg.prepare(sheet.A);
+    ASSERT_EQ(amg.patchedSetups(), round);
+    whole = wholeBlocks(sheet.A);
+    expectConsistentTransfer(amg.hierarchy(), 0, &whole);
+    for (int l = 1; l + 1 < amg.hierarchy().levelCount(); ++l) expectConsistentTransfer(amg.hierarchy(), l);
+  }
+  EXPECT_EQ(amg.fullSetups(), 1);
+  EXPECT_TRUE(amg.wingsInGalerkinProduct());
+  Eigen::VectorXd x;
+  EXPECT_TRUE(solveWith(sheet, amg, 1e-8, x).converged);
 }
 
 TEST(AmgPatch, PatchedVCycleIsSymmetricPositiveDefinite) {

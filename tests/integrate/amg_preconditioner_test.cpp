@@ -153,6 +153,29 @@ TEST(AmgPreconditioner, IterationsStayBoundedAsTheGridIsRefined) {
   EXPECT_GT(jacobiIterations[2], 2 * jacobiIterations[0]);  // what the bound above rules out
 }
 
+TEST(AmgPreconditioner, TheWingsEnterTheGalerkinProductWhereTheyCostIterations) {
+  // The hinges' wing couplings grow against the membrane's about fourfold per halving of the edge
+  // (docs/solver.md, "Why the iterations double at 256²"). Below the threshold the first coarse
+  // level is built without them (the shipped resolutions); with them in it, the CG needs fewer
+  // iterations on a fine sheet. 256² (52 against 36 iterations) is too slow for a test; 128² shows
+  // the same direction (27 against 24).
+  const ClothSystem coarse = movingSheetSystem(32, 20);
+  AmgPreconditioner byDefault;
+  byDefault.prepare(coarse.A);
+  EXPECT_FALSE(byDefault.wingsInGalerkinProduct());
+  const ClothSystem fine = movingSheetSystem(128, 20);
+  AmgPreconditioner::Settings withWings;
+  withWings.wingShareThreshold = 0.0;
+  AmgPreconditioner without, with(withWings);
+  const int iterationsWithout = iterationsToTolerance(fine, without, 1e-6);
+  const int iterationsWith = iterationsToTolerance(fine, with, 1e-6);
+  EXPECT_FALSE(without.wingsInGalerkinProduct());
+  EXPECT_TRUE(with.wingsInGalerkinProduct());
+  std::printf("128²: %d CG iterations without the wings in the first Galerkin product, %d with them\n",
+              iterationsWithout, iterationsWith);
+  EXPECT_LT(iterationsWith, iterationsWithout);
+}
+
 TEST(AmgPreconditioner, PatchesOrRebuildsAfterThePatternGrowsAsInATear) {
   // By default a pattern change patches the hierarchy (amg_patch.h); without the patch it is built
   // anew. Either way the solve after it is right.
