@@ -1,7 +1,6 @@
 #include "integrate/amg_preconditioner.h"
 
 #include <algorithm>
-#include <cstdlib>
 
 namespace weft {
 namespace {
@@ -110,7 +109,7 @@ void AmgPreconditioner::analyze(const SystemMatrix& A) {
   analyzedSize_ = A.matrix().rows();
 }
 
-void AmgPreconditioner::gather(const SystemMatrix& A, bool fillWhole) {
+void AmgPreconditioner::gather(const SystemMatrix& A) {
   // One pass over A, column block by column block: the finest level's row i is column block i
   // (A is symmetric), each block read as three runs of three values. A dropped pair (j, i), j < i,
   // met in column block i, adds its compensation (strong_coupling_approximation.h) to both
@@ -145,11 +144,16 @@ void AmgPreconditioner::gather(const SystemMatrix& A, bool fillWhole) {
   }
   for (int i = 0; i < n; ++i)
     if (diagonalSlot_[i] >= 0) finest_.blocks[diagonalSlot_[i]] += compensation_[i];
-  if (!fillWhole) return;
+}
+
+void AmgPreconditioner::gatherWhole(const SystemMatrix& A) {
   // A itself into whole_, and the wings' share of the off-diagonal coupling (block Frobenius norms).
+  const int* outer = A.matrix().outerIndexPtr();
+  const double* values = A.matrix().valuePtr();
+  const int n = whole_.blockRows;
   double weakNorms = 0.0, offDiagonalNorms = 0.0;
   int slot = 0;
-  code = blockCode_.data();
+  const int* code = blockCode_.data();
   for (int i = 0; i < n; ++i) {
     const double* v[3] = {values + outer[3 * i], values + outer[3 * i + 1], values + outer[3 * i + 2]};
     const int length = outer[3 * i + 1] - outer[3 * i];
@@ -177,7 +181,8 @@ void AmgPreconditioner::prepare(const SystemMatrix& A) {
     analyze(A);
   }
   const bool setUp = patternChanged || hierarchy_.levelCount() == 0;
-  gather(A, wings_ || setUp);
+  gather(A);
+  if (wings_) gatherWhole(A);
   if (setUp) {
     hierarchy_.setFinestProductOperator(wings_ ? &whole_ : nullptr);
     if (hierarchy_.levelCount() > 0 && settings_.patchAfterPatternChange &&
@@ -186,6 +191,7 @@ void AmgPreconditioner::prepare(const SystemMatrix& A) {
     } else {
       // A build decides whether the wings enter the first Galerkin product (see Settings); a
       // patch keeps the decision (the hierarchy's patterns follow it).
+      if (!wings_) gatherWhole(A);
       wings_ = wingShare_ >= settings_.wingShareThreshold;
       hierarchy_.setFinestProductOperator(wings_ ? &whole_ : nullptr);
       hierarchy_.build(finest_);

@@ -69,8 +69,9 @@ class AmgPreconditioner final : public Preconditioner {
 
  private:
   void analyze(const SystemMatrix& A);
-  // A's values into finest_ (and, with fillWhole, into whole_, measuring wingShare_).
-  void gather(const SystemMatrix& A, bool fillWhole);
+  void gather(const SystemMatrix& A);
+  // A's values, every block, into whole_, measuring wingShare_ (each step while wings_; before a build).
+  void gatherWhole(const SystemMatrix& A);
   void cycle(int l, const Eigen::VectorXd& b, Eigen::VectorXd& x);
 
   Settings settings_;

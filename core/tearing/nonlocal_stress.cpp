@@ -185,9 +185,11 @@ void NonlocalStress::buildNeighbours(const ClothMesh& mesh, int t) {
   scale_[t] = shares > 0.0 ? 1.0 / shares : 0.0;
 }
 
+NonlocalStress::PackedStress NonlocalStress::packed(const Mat2& s) { return {Double2{s(0, 0), s(1, 1)}, s(0, 1), 0.0}; }
+
 void NonlocalStress::pack(const std::vector<Mat2>& local) {
   packed_.resize(local.size());
-  for (std::size_t t = 0; t < local.size(); ++t) packed_[t] = {Double2{local[t](0, 0), local[t](1, 1)}, local[t](0, 1), 0.0};
+  for (std::size_t t = 0; t < local.size(); ++t) packed_[t] = packed(local[t]);
 }
 
 Mat2 NonlocalStress::averageAt(const std::vector<Mat2>& local, int t) const {
@@ -338,7 +340,7 @@ std::vector<int> NonlocalStress::patch(const ClothMesh& mesh, const std::vector<
   // The changed triangles' stresses (and new ones) into the packed copy the averages read, and
   // their own neighbourhoods and averages on the torn mesh.
   packed_.resize(local.size());
-  for (int t : seeds) packed_[t] = {Double2{local[t](0, 0), local[t](1, 1)}, local[t](0, 1), 0.0};
+  for (int t : seeds) packed_[t] = packed(local[t]);
   for (int t : seeds) {
     buildNeighbours(mesh, t);
     out[t] = averageAt(local, t);

@@ -128,6 +128,7 @@ class NonlocalStress {
     Double2 xxyy;
     double xy, unused;
   };
+  static PackedStress packed(const Mat2& stress);
   std::vector<PackedStress> packed_;  // the local stresses the averages read (see averageAt)
   std::vector<char> hot_;        // per triangle, this call: its local stress reaches the threshold
   std::vector<char> needed_;     // per triangle, this call: its average could reach the threshold

@@ -113,6 +113,15 @@ LinearSolveResult solveWith(const TornSheet& sheet, Preconditioner& precondition
   return cg.solve(sheet.A, sheet.b, 0.0, preconditioner, x);
 }
 
+// Every level patched (none built anew below a size or for the share it frees), the cycle in double.
+AmgPreconditioner::Settings everyLevelPatched() {
+  AmgPreconditioner::Settings settings;
+  settings.hierarchy.patchMinimumVertices = 0;
+  settings.hierarchy.patchLimit = 1.0;
+  settings.singlePrecisionCycle = false;
+  return settings;
+}
+
 AmgPreconditioner::Settings rebuildingSettings() {
   AmgPreconditioner::Settings settings;
   settings.patchAfterPatternChange = false;
@@ -218,11 +227,7 @@ TEST(AmgPatch, EveryPatchedLevelHoldsTheTransferOfItsAggregates) {
   // coarse levels' patches (seeds from the level above, holes in the numbering, coarse rows
   // removed) are exercised too.
   TornSheet sheet(20, 15);
-  AmgPreconditioner::Settings settings;
-  settings.hierarchy.patchMinimumVertices = 0;
-  settings.hierarchy.patchLimit = 1.0;
-  settings.singlePrecisionCycle = false;
-  AmgPreconditioner amg(settings);
+  AmgPreconditioner amg(everyLevelPatched());
   amg.prepare(sheet.A);
   ASSERT_GE(amg.hierarchy().levelCount(), 3);
   for (int round = 1; round <= 4; ++round) {
@@ -254,10 +259,7 @@ TEST(AmgPatch, WithTheWingsInTheGalerkinProductEveryPatchedLevelStillHoldsItsTra
   // The first coarse level as P^T A P with A's wing couplings (forced on: a 20² sheet's wings are
   // far below the default threshold), patched through tears that change the wings too.
   TornSheet sheet(20, 15);
-  AmgPreconditioner::Settings settings;
-  settings.hierarchy.patchMinimumVertices = 0;
-  settings.hierarchy.patchLimit = 1.0;
-  settings.singlePrecisionCycle = false;
+  AmgPreconditioner::Settings settings = everyLevelPatched();
   settings.wingShareThreshold = 0.0;
   AmgPreconditioner amg(settings);
   amg.prepare(sheet.A);
