@@ -86,6 +86,60 @@ void addElementHessian(const SymmetricBlocks<N>& blocks, const std::array<int, N
   }
 }
 
+// Adds the part of an element's forces and Hessian that falls to vertices [first, end): the forces
+// of those vertices and the blocks stored in their columns (block (v_i, v_j) lives in v_j's columns).
+// Every value of the matrix and every force belongs to exactly one such range, so parts running
+// side by side never write the same number, and each number still receives the elements in element
+// order: the sums are bit for bit those of one thread adding every element.
+template <int N>
+void addOwnedPart(const std::array<Vec3, N>& force, const SymmetricBlocks<N>* blocks, const std::array<int, N>& v,
+                  const std::array<int, N * N>& blockStart, int first, int end, std::vector<Vec3>& forces,
+                  SystemMatrix* matrix) {
+  auto owns = [&](int vertex) { return vertex >= first && vertex < end; };
+  for (int i = 0; i < N; ++i) {
+    if (owns(v[i])) forces[v[i]] += force[i];
+  }
+  if (blocks == nullptr) return;
+  SystemMatrix::Sparse& sparse = matrix->matrix();
+  const int* outer = sparse.outerIndexPtr();
+  double* values = sparse.valuePtr();
+  int k = 0;
+  for (int i = 0; i < N; ++i) {
+    const int lengthI = outer[3 * v[i] + 1] - outer[3 * v[i]];
+    if (owns(v[i])) addBlockAt(values + blockStart[i * N + i], lengthI, blocks->upper[k]);
+    ++k;
+    for (int j = i + 1; j < N; ++j, ++k) {
+      if (owns(v[j])) addBlockAt(values + blockStart[i * N + j], outer[3 * v[j] + 1] - outer[3 * v[j]], blocks->upper[k]);
+      if (owns(v[i])) addTransposedBlockAt(values + blockStart[j * N + i], lengthI, blocks->upper[k]);
+    }
+  }
+}
+
+// Per part, the elements with a vertex in its range, in element order.
+template <typename Element>
+void elementsByPart(const std::vector<Element>& elements, int vertexCount, int parts,
+                    std::vector<std::vector<int>>& out) {
+  out.resize(parts);
+  for (std::vector<int>& list : out) list.clear();
+  for (int e = 0; e < static_cast<int>(elements.size()); ++e) {
+    int lastPart = -1;
+    std::array<int, 4> seen{-1, -1, -1, -1};
+    int count = 0;
+    for (int vertex : elements[e].v) {
+      const int part = static_cast<int>(static_cast<long>(vertex) * parts / std::max(vertexCount, 1));
+      if (part == lastPart || std::find(seen.begin(), seen.begin() + count, part) != seen.begin() + count) continue;
+      seen[count++] = part;
+      lastPart = part;
+      out[part].push_back(e);
+    }
+  }
+}
+
+inline int partStart(int part, int parts, int vertexCount) {
+  // The first vertex whose part (vertex * parts / vertexCount, as elementsByPart reads it) is `part`.
+  return static_cast<int>((static_cast<long>(part) * vertexCount + parts - 1) / parts);
+}
+
 }  // namespace
 
 double maxPrincipalStrain(const Eigen::Vector3d& e) {
@@ -105,6 +159,8 @@ ElasticSummary evaluateElasticForces(const Cloth& cloth, const std::vector<Vec3>
   // with more, all are evaluated in parallel into per-element buffers first. Either way the sums
   // run in element order over the same numbers, so the result never depends on the thread count.
   const bool buffered = options.threads > 1;
+  const int vertexCount = static_cast<int>(x.size());
+  const int parts = std::clamp(options.threads, 1, std::max(1, vertexCount));
 
   const int triangleCount = static_cast<int>(cloth.membranes.size());
   {
@@ -135,12 +191,33 @@ ElasticSummary evaluateElasticForces(const Cloth& cloth, const std::vector<Vec3>
       if (mode != HessianMode::None) addElementHessian<3>(r.hessian, element.v, workspace.membraneBlockStart[t], *hessian);
     };
     if (buffered) {
-      // Evaluated in parallel into per-element buffers (or found in the cache), then added in order.
-      workspace.membrane.resize(triangleCount);
-      workspace.membraneTaken.resize(triangleCount);
-#pragma omp parallel for num_threads(options.threads) schedule(static)
-      for (int t = 0; t < triangleCount; ++t) workspace.membraneTaken[t] = &contributionOf(t, workspace.membrane[t]);
-      for (int t = 0; t < triangleCount; ++t) add(t, *workspace.membraneTaken[t]);
+      // Each thread evaluates the triangles touching its vertex range and adds what falls in the
+      // range (addOwnedPart says why the sums are those of one thread); a triangle across two ranges
+      // is evaluated by both, the same arithmetic on the same numbers. The energies and strains are
+      // summed afterwards in triangle order.
+      elementsByPart(cloth.membranes, vertexCount, parts, workspace.elementsOfPart);
+      workspace.energy.resize(triangleCount);
+      workspace.strain.resize(triangleCount);
+#pragma omp parallel for num_threads(parts) schedule(static, 1)
+      for (int part = 0; part < parts; ++part) {
+        const int first = partStart(part, parts, vertexCount), end = partStart(part + 1, parts, vertexCount);
+        MembraneContribution scratch;
+        for (int t : workspace.elementsOfPart[part]) {
+          const MembraneContribution& r = contributionOf(t, scratch);
+          const std::array<int, 3>& v = cloth.membranes[t].v;
+          if (const int lowest = std::min({v[0], v[1], v[2]}); lowest >= first && lowest < end) {
+            workspace.energy[t] = r.energy;
+            workspace.strain[t] = maxPrincipalStrain(r.strain);
+          }
+          addOwnedPart<3>(r.force, mode != HessianMode::None ? &r.hessian : nullptr, v,
+                          mode != HessianMode::None ? workspace.membraneBlockStart[t] : std::array<int, 9>{}, first, end,
+                          forces, hessian);
+        }
+      }
+      for (int t = 0; t < triangleCount; ++t) {
+        summary.membraneEnergy += workspace.energy[t];
+        summary.maxPrincipalStrain = std::max(summary.maxPrincipalStrain, workspace.strain[t]);
+      }
     } else {
       MembraneContribution contribution;
       for (int t = 0; t < triangleCount; ++t) add(t, contributionOf(t, contribution));
@@ -161,10 +238,25 @@ ElasticSummary evaluateElasticForces(const Cloth& cloth, const std::vector<Vec3>
       if (mode != HessianMode::None) addElementHessian<4>(r.hessian, hinge.v, workspace.hingeBlockStart[h], *hessian);
     };
     if (buffered) {
-      workspace.bending.resize(hingeCount);
-#pragma omp parallel for num_threads(options.threads) schedule(static)
-      for (int h = 0; h < hingeCount; ++h) evaluate(h, workspace.bending[h]);
-      for (int h = 0; h < hingeCount; ++h) add(h, workspace.bending[h]);
+      // As the membrane's: each thread its vertex range, the energies summed in hinge order.
+      elementsByPart(cloth.hinges, vertexCount, parts, workspace.elementsOfPart);
+      workspace.energy.resize(hingeCount);
+#pragma omp parallel for num_threads(parts) schedule(static, 1)
+      for (int part = 0; part < parts; ++part) {
+        const int first = partStart(part, parts, vertexCount), end = partStart(part + 1, parts, vertexCount);
+        HingeContribution r;
+        for (int h : workspace.elementsOfPart[part]) {
+          evaluate(h, r);
+          const std::array<int, 4>& v = cloth.hinges[h].v;
+          if (const int lowest = std::min({v[0], v[1], v[2], v[3]}); lowest >= first && lowest < end) {
+            workspace.energy[h] = r.energy;
+          }
+          addOwnedPart<4>(r.force, mode != HessianMode::None ? &r.hessian : nullptr, v,
+                          mode != HessianMode::None ? workspace.hingeBlockStart[h] : std::array<int, 16>{}, first, end,
+                          forces, hessian);
+        }
+      }
+      for (int h = 0; h < hingeCount; ++h) summary.bendingEnergy += workspace.energy[h];
     } else {
       HingeContribution contribution;
       for (int h = 0; h < hingeCount; ++h) {

@@ -1,8 +1,9 @@
 #pragma once
 // Internal (elastic) forces of a cloth: the membrane of every triangle and the bending of every
-// hinge, with their energy and Hessian. Elements are evaluated in parallel into per-element
-// buffers and then summed in element order (one thread sums each as it goes, in the same order),
-// so the result never depends on the thread count.
+// hinge, with their energy and Hessian. One thread adds each element as it evaluates it, in element
+// order; several split the vertices into ranges, each evaluating the elements that touch its range
+// and adding what falls in it, so every sum still runs in element order over the same numbers and
+// the result never depends on the thread count.
 #include <array>
 #include <vector>
 
@@ -35,11 +36,12 @@ struct ElasticSummary {
 
 // Scratch space reused across steps (no allocation once sized).
 struct ElasticWorkspace {
-  // Per-element results of a multi-threaded evaluation (a single thread adds each element as it
-  // goes, in the same order and with the same arithmetic, so the sums are identical).
-  std::vector<MembraneContribution> membrane;
-  std::vector<HingeContribution> bending;
-  std::vector<const MembraneContribution*> membraneTaken;  // per triangle: its buffer above, or the cache's entry
+  // With several threads: per vertex range (one per thread), the elements with a vertex in it,
+  // each range's forces and Hessian columns added by one thread (elastic_forces.cpp, addOwnedPart);
+  // and per element its energy and largest principal strain, summed in element order afterwards.
+  std::vector<std::vector<int>> elementsOfPart;
+  std::vector<double> energy;
+  std::vector<double> strain;
 
   // Where each element's 3x3 Hessian blocks sit among the system matrix's values: entry i*N + j
   // is the offset of column 0 of block (v_i, v_j); the block's other columns follow at the length
