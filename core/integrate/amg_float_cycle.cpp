@@ -30,32 +30,54 @@ int threadsFor(int rows, int threads) { return rows >= BlockSparseMatrix::kRowsP
 
 }  // namespace
 
-void AmgFloatCycle::build(const AmgHierarchy& hierarchy) {
+void AmgFloatCycle::build(const AmgHierarchy& hierarchy, int splitRows) {
   levels_.assign(hierarchy.levelCount(), Level{});
   for (int l = 0; l < hierarchy.levelCount(); ++l) {
     const AmgHierarchy::Level& source = hierarchy.level(l);
     const BlockSparseMatrix& A = source.A;
     Level& level = levels_[l];
     level.rows = A.blockRows;
+    // The sweep order's groups (Level says why): 0 below the split, 1 after it, 2 the interface.
+    std::vector<char> group(A.blockRows, 0);
+    level.split = splitRows > 0 && A.blockRows >= splitRows ? A.blockRows / 2 : 0;
+    level.secondGroup.clear();
+    level.interfaceRows.clear();
+    if (level.split > 0) {
+      for (int i = level.split; i < A.blockRows; ++i) {
+        bool touchesFirst = false;
+        for (int k = A.rowStart[i]; k < A.rowStart[i + 1] && !touchesFirst; ++k) touchesFirst = A.column[k] < level.split;
+        group[i] = touchesFirst ? 2 : 1;
+        (touchesFirst ? level.interfaceRows : level.secondGroup).push_back(i);
+      }
+    }
+    auto before = [&](int a, int b) { return group[a] != group[b] ? group[a] < group[b] : a < b; };
     level.offStart.assign(A.blockRows + 1, 0);
-    level.upperStart.assign(A.blockRows, 0);
+    level.laterStart.assign(A.blockRows, 0);
     level.diagonalSource.assign(A.blockRows, -1);
     level.offColumn.clear();
     level.offSource.clear();
+    std::vector<std::pair<int, int>> row;  // (column, slot) of one row's off-diagonal blocks
     for (int i = 0; i < A.blockRows; ++i) {
-      level.upperStart[i] = -1;
+      row.clear();
       for (int k = A.rowStart[i]; k < A.rowStart[i + 1]; ++k) {
-        const int j = A.column[k];
-        if (j == i) {
+        if (A.column[k] == i) {
           level.diagonalSource[i] = k;
-          continue;
+        } else {
+          row.emplace_back(A.column[k], k);
         }
-        if (j > i && level.upperStart[i] < 0) level.upperStart[i] = static_cast<int>(level.offColumn.size());
-        level.offColumn.push_back(j);
-        level.offSource.push_back(k);
       }
+      // In sweep order (the columns' own order when there is no split: A's rows are sorted).
+      if (level.split > 0)
+        std::stable_sort(row.begin(), row.end(), [&](const auto& a, const auto& b) { return before(a.first, b.first); });
+      const int first = static_cast<int>(level.offColumn.size());
+      int later = first + static_cast<int>(row.size());
+      for (std::size_t n = 0; n < row.size(); ++n) {
+        if (later == first + static_cast<int>(row.size()) && before(i, row[n].first)) later = first + static_cast<int>(n);
+        level.offColumn.push_back(row[n].first);
+        level.offSource.push_back(row[n].second);
+      }
+      level.laterStart[i] = later;
       level.offStart[i + 1] = static_cast<int>(level.offColumn.size());
-      if (level.upperStart[i] < 0) level.upperStart[i] = level.offStart[i + 1];
     }
     level.off.resize(3 * level.offColumn.size());
     level.inverseDiagonal.resize(3 * static_cast<size_t>(A.blockRows));
@@ -146,29 +168,29 @@ void AmgFloatCycle::cycle(const AmgHierarchy& hierarchy, int l, int sweeps, int 
   const Float4* inverseDiagonal = level.inverseDiagonal.data();
   Float4* x = level.x.data();
   const Float4* b = level.b.data();
-  // First forward sweep from x = 0: the blocks right of the diagonal multiply zeros, skip them.
-  for (int i = 0; i < n; ++i) {
+  // First forward sweep from x = 0: the blocks of rows later in the order multiply zeros, skip them.
+  sweepForward(level, threads, [&](int i) {
     Float4 sum = b[i];
-    for (int k = level.offStart[i]; k < level.upperStart[i]; ++k) sum -= times(off + 3 * k, x[level.offColumn[k]]);
+    for (int k = level.offStart[i]; k < level.laterStart[i]; ++k) sum -= times(off + 3 * k, x[level.offColumn[k]]);
     x[i] = times(inverseDiagonal + 3 * i, sum);
-  }
-  for (int sweep = 1; sweep < sweeps; ++sweep)
-    for (int i = 0; i < n; ++i) {
-      Float4 sum = b[i];
-      for (int k = level.offStart[i]; k < level.offStart[i + 1]; ++k) sum -= times(off + 3 * k, x[level.offColumn[k]]);
-      x[i] = times(inverseDiagonal + 3 * i, sum);
-    }
+  });
+  auto solveRow = [&](int i) {
+    Float4 sum = b[i];
+    for (int k = level.offStart[i]; k < level.offStart[i + 1]; ++k) sum -= times(off + 3 * k, x[level.offColumn[k]]);
+    x[i] = times(inverseDiagonal + 3 * i, sum);
+  };
+  for (int sweep = 1; sweep < sweeps; ++sweep) sweepForward(level, threads, solveRow);
   if (!coarsest) {
     Level& coarse = levels_[l + 1];
     Float4* r = level.r.data();
     const int rowThreads = threadsFor(n, threads);
-    // The residual b - A x. After one sweep from zero each row's equation was met with the lower
-    // part and the diagonal when it was solved: what is left is -(strictly upper part) x.
+    // The residual b - A x. After one sweep from zero each row's equation was met with the rows
+    // before it and the diagonal when it was solved: what is left is -(the rows after it) x.
     if (sweeps == 1) {
 #pragma omp parallel for num_threads(rowThreads) schedule(static)
       for (int i = 0; i < n; ++i) {
         Float4 sum = Float4{};
-        for (int k = level.upperStart[i]; k < level.offStart[i + 1]; ++k) sum -= times(off + 3 * k, x[level.offColumn[k]]);
+        for (int k = level.laterStart[i]; k < level.offStart[i + 1]; ++k) sum -= times(off + 3 * k, x[level.offColumn[k]]);
         r[i] = sum;
       }
     } else {
@@ -199,12 +221,41 @@ void AmgFloatCycle::cycle(const AmgHierarchy& hierarchy, int l, int sweeps, int 
       x[i] += sum;
     }
   }
-  for (int sweep = 0; sweep < sweeps; ++sweep)
-    for (int i = n - 1; i >= 0; --i) {
-      Float4 sum = b[i];
-      for (int k = level.offStart[i]; k < level.offStart[i + 1]; ++k) sum -= times(off + 3 * k, x[level.offColumn[k]]);
-      x[i] = times(inverseDiagonal + 3 * i, sum);
+  for (int sweep = 0; sweep < sweeps; ++sweep) sweepBackward(level, threads, solveRow);
+}
+
+template <typename Row>
+void AmgFloatCycle::sweepForward(const Level& level, int threads, const Row& row) {
+  if (level.split == 0) {
+    for (int i = 0; i < level.rows; ++i) row(i);
+    return;
+  }
+#pragma omp parallel for num_threads(std::clamp(threads, 1, 2)) schedule(static, 1)
+  for (int group = 0; group < 2; ++group) {
+    if (group == 0) {
+      for (int i = 0; i < level.split; ++i) row(i);
+    } else {
+      for (int i : level.secondGroup) row(i);
     }
+  }
+  for (int i : level.interfaceRows) row(i);
+}
+
+template <typename Row>
+void AmgFloatCycle::sweepBackward(const Level& level, int threads, const Row& row) {
+  if (level.split == 0) {
+    for (int i = level.rows - 1; i >= 0; --i) row(i);
+    return;
+  }
+  for (auto i = level.interfaceRows.rbegin(); i != level.interfaceRows.rend(); ++i) row(*i);
+#pragma omp parallel for num_threads(std::clamp(threads, 1, 2)) schedule(static, 1)
+  for (int group = 0; group < 2; ++group) {
+    if (group == 0) {
+      for (int i = level.split - 1; i >= 0; --i) row(i);
+    } else {
+      for (auto i = level.secondGroup.rbegin(); i != level.secondGroup.rend(); ++i) row(*i);
+    }
+  }
 }
 
 }  // namespace weft

@@ -34,8 +34,15 @@ class AmgFloatCycle {
  public:
   using Float4 = float __attribute__((vector_size(16)));
 
-  // Patterns of every level (after AmgHierarchy::build).
-  void build(const AmgHierarchy& hierarchy);
+  // A level this large has its sweeps split in two groups (Level). One thread does the same work
+  // either way, but the order differs from the rows' own, and so do the results' last bits: this
+  // keeps every level of the shipped scenes (up to 1,600 vertices) in the rows' own order, their
+  // results unchanged; from 64² on (4,096 rows) two threads share the finest sweeps.
+  static constexpr int kDefaultSplitRows = 2048;
+
+  // Patterns of every level (after AmgHierarchy::build); levels of at least `splitRows` rows are
+  // swept in two groups (0: none).
+  void build(const AmgHierarchy& hierarchy, int splitRows = kDefaultSplitRows);
   // Values of every level (after AmgHierarchy::build or refresh). Row-wise over `threads`.
   void refresh(const AmgHierarchy& hierarchy, int threads);
   // outZ = one V-cycle applied to inR (both double): `sweeps` block Gauss-Seidel sweeps forward
@@ -46,9 +53,18 @@ class AmgFloatCycle {
  private:
   struct Level {
     int rows = 0;
-    // Off-diagonal blocks of A by rows: offStart[i] .. offStart[i+1]-1, columns increasing;
-    // upperStart[i] is the first with column > i.
-    std::vector<int> offStart, upperStart, offColumn, offSource;  // offSource: the block's slot in the level's A
+    // The Gauss-Seidel sweeps' row order. split == 0: rows in increasing order. Otherwise (a level
+    // large enough for two threads) three groups, each in increasing order: the rows below
+    // `split`, then `secondGroup` (rows from `split` on that touch no row below it), then
+    // `interfaceRows` (the others). No row of the first group is coupled to one of the second, so
+    // two threads sweep those side by side, and the interface after them, exactly as one thread
+    // sweeping the whole order: the result does not depend on the thread count.
+    int split = 0;
+    std::vector<int> secondGroup, interfaceRows;
+    // Off-diagonal blocks of A by rows: offStart[i] .. offStart[i+1]-1, the blocks of rows that
+    // come before row i in the sweep order first (columns increasing within each group);
+    // laterStart[i] is the first block of a row that comes after it.
+    std::vector<int> offStart, laterStart, offColumn, offSource;  // offSource: the block's slot in the level's A
     std::vector<int> diagonalSource;                             // slot of A_ii, or -1
     std::vector<Float4> off;                                     // 3 per block: its columns
     std::vector<Float4> inverseDiagonal;                         // 3 per vertex
@@ -62,6 +78,12 @@ class AmgFloatCycle {
   };
 
   void cycle(const AmgHierarchy& hierarchy, int l, int sweeps, int threads);
+  // `row(i)` for every row of the level in its sweep order (forward) or in reverse (backward), the
+  // first two groups on two threads when there are.
+  template <typename Row>
+  static void sweepForward(const Level& level, int threads, const Row& row);
+  template <typename Row>
+  static void sweepBackward(const Level& level, int threads, const Row& row);
 
   std::vector<Level> levels_;
   Eigen::VectorXd coarsestRhs_, coarsestSolution_;

@@ -197,7 +197,7 @@ void AmgPreconditioner::prepare(const SystemMatrix& A) {
       hierarchy_.build(finest_);
       ++fullSetups_;
     }
-    if (settings_.singlePrecisionCycle) floatCycle_.build(hierarchy_);
+    if (settings_.singlePrecisionCycle) floatCycle_.build(hierarchy_, settings_.splitSweepRows);
   } else {
     hierarchy_.refresh(finest_, threads_);
   }

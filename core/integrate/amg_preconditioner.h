@@ -47,6 +47,10 @@ class AmgPreconditioner final : public Preconditioner {
     // against the membrane and the coarse level built without the wings loses the bending modes
     // (docs/solver.md, "Why the iterations double at 256²": 52 -> 36 CG iterations at 256²).
     double wingShareThreshold = 0.0008;
+    // The float cycle sweeps a level of at least this many rows in two groups that two threads
+    // take side by side (amg_float_cycle.h); smaller levels in their rows' own order. The same
+    // bits on any thread count either way; 0: never split.
+    int splitSweepRows = AmgFloatCycle::kDefaultSplitRows;
   };
 
   AmgPreconditioner() : AmgPreconditioner(Settings{}) {}
