@@ -37,7 +37,9 @@ class AmgFloatCycle {
   // A level this large has its sweeps split in two groups (Level). One thread does the same work
   // either way, but the order differs from the rows' own, and so do the results' last bits: this
   // keeps every level of the shipped scenes (up to 1,600 vertices) in the rows' own order, their
-  // results unchanged; from 64² on (4,096 rows) two threads share the finest sweeps.
+  // results unchanged; from 64² on (4,096 rows) two threads share the finest sweeps. (Splitting the
+  // coarse levels of a few hundred rows too was measured to move the 64² ball's crack growth past
+  // its test's 10% band: docs/solver.md, round 8.)
   static constexpr int kDefaultSplitRows = 2048;
 
   // Patterns of every level (after AmgHierarchy::build); levels of at least `splitRows` rows are
@@ -54,7 +56,7 @@ class AmgFloatCycle {
   struct Level {
     int rows = 0;
     // The Gauss-Seidel sweeps' row order. split == 0: rows in increasing order. Otherwise (a level
-    // large enough for two threads) three groups, each in increasing order: the rows below
+    // large enough for two threads, amg_float_cycle.cpp) three groups, each in increasing order: the rows below
     // `split`, then `secondGroup` (rows from `split` on that touch no row below it), then
     // `interfaceRows` (the others). No row of the first group is coupled to one of the second, so
     // two threads sweep those side by side, and the interface after them, exactly as one thread

@@ -142,9 +142,9 @@ void AmgHierarchy::smoothProlongator(Level& level, int threads) {
   // P = (I - omega D^-1 A) T: T puts I at (i, aggregateOf[i]). Row i of A writes row i of P only.
   BlockSparseMatrix& P = level.P;
   const BlockSparseMatrix& A = level.A;
-  P.setZero();
 #pragma omp parallel for num_threads(A.threadsFor(threads)) schedule(static)
   for (int i = 0; i < A.blockRows; ++i) {
+    std::fill(P.blocks.begin() + P.rowStart[i], P.blocks.begin() + P.rowStart[i + 1], Mat3::Zero());
     if (level.tentativeSlots[i] >= 0) P.blocks[level.tentativeSlots[i]] += Mat3::Identity();
     const Mat3 scaledInverse = level.omega * level.inverseDiagonal[i];
     for (int k = A.rowStart[i]; k < A.rowStart[i + 1]; ++k)
@@ -158,25 +158,43 @@ void AmgHierarchy::galerkinProduct(int l, int threads) {
   const BlockSparseMatrix& A = l == 0 && finestProduct_ != nullptr ? *finestProduct_ : fine.A;
   const BlockSparseMatrix& P = fine.P;
   BlockSparseMatrix& AP = fine.AP;
-  AP.setZero();
-  // Row i of A writes row i of A P only: rows in parallel, each summed in the same order.
+  // Row i of A writes row i of A P only: rows in parallel (each zeroed by its thread), each summed
+  // in the same order.
 #pragma omp parallel for num_threads(A.threadsFor(threads)) schedule(static)
   for (int i = 0; i < A.blockRows; ++i) {
+    std::fill(AP.blocks.begin() + AP.rowStart[i], AP.blocks.begin() + AP.rowStart[i + 1], Mat3::Zero());
     const int* slot = fine.productSlots.data() + fine.productStart[i];
     for (int k = A.rowStart[i]; k < A.rowStart[i + 1]; ++k) {
       const int j = A.column[k];
       for (int p = P.rowStart[j]; p < P.rowStart[j + 1]; ++p) AP.blocks[*slot++].noalias() += A.blocks[k] * P.blocks[p];
     }
   }
-  // P^T (A P) scatters into the coarse rows: one thread.
+  // P^T (A P) scatters into the coarse rows: block (i, I) of P adds P(i, I)^T (A P)(i, .) to coarse
+  // row I. Each thread takes a range of coarse rows and goes through the fine rows in order, adding
+  // what falls in its range: every coarse block receives the same terms in the same order as from
+  // one thread going through them all.
   BlockSparseMatrix& Ac = coarse.A;
   Ac.setZero();
-  const int* slot = fine.galerkinSlots.data();
+  const int parts = std::min(A.threadsFor(threads), std::max(1, Ac.blockRows));
+  galerkinRowStart_.resize(A.blockRows + 1);
+  galerkinRowStart_[0] = 0;
   for (int i = 0; i < A.blockRows; ++i)
-    for (int p = P.rowStart[i]; p < P.rowStart[i + 1]; ++p) {
-      const Mat3 transposed = P.blocks[p].transpose();
-      for (int w = AP.rowStart[i]; w < AP.rowStart[i + 1]; ++w) Ac.blocks[*slot++].noalias() += transposed * AP.blocks[w];
+    galerkinRowStart_[i + 1] =
+        galerkinRowStart_[i] + (P.rowStart[i + 1] - P.rowStart[i]) * (AP.rowStart[i + 1] - AP.rowStart[i]);
+#pragma omp parallel for num_threads(parts) schedule(static, 1)
+  for (int part = 0; part < parts; ++part) {
+    const int first = static_cast<int>(static_cast<long>(Ac.blockRows) * part / parts);
+    const int end = static_cast<int>(static_cast<long>(Ac.blockRows) * (part + 1) / parts);
+    for (int i = 0; i < A.blockRows; ++i) {
+      const int length = AP.rowStart[i + 1] - AP.rowStart[i];
+      const int* slot = fine.galerkinSlots.data() + galerkinRowStart_[i];
+      for (int p = P.rowStart[i]; p < P.rowStart[i + 1]; ++p, slot += length) {
+        if (P.column[p] < first || P.column[p] >= end) continue;
+        const Mat3 transposed = P.blocks[p].transpose();
+        for (int w = 0; w < length; ++w) Ac.blocks[slot[w]].noalias() += transposed * AP.blocks[AP.rowStart[i] + w];
+      }
     }
+  }
   for (int s = 0; s < Ac.blockCount(); ++s) {
     const int t = coarse.transposeSlots[s];
     if (t < s) continue;

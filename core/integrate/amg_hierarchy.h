@@ -124,6 +124,7 @@ class AmgHierarchy {
 
   AmgSettings settings_;
   const BlockSparseMatrix* finestProduct_ = nullptr;
+  std::vector<int> galerkinRowStart_;  // galerkinProduct's scratch: per fine row, its first galerkinSlots entry
   std::vector<Level> levels_;
   Eigen::MatrixXd coarsestDense_;
   Eigen::LLT<Eigen::MatrixXd> coarsestFactor_;

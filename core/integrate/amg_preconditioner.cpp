@@ -5,6 +5,8 @@
 namespace weft {
 namespace {
 
+constexpr int kNoVertex = -1;  // a dropped pair whose compensation adds nothing
+
 // Forward (i = 0 .. n-1) or backward block Gauss-Seidel sweep on A x = b.
 void gaussSeidelSweep(const AmgHierarchy::Level& level, const Eigen::VectorXd& b, Eigen::VectorXd& x, bool forward) {
   const BlockSparseMatrix& A = level.A;
@@ -96,6 +98,17 @@ void AmgPreconditioner::analyze(const SystemMatrix& A) {
   }
   finest_.blocks.assign(finest_.column.size(), Mat3::Zero());
   compensation_.assign(n, Mat3::Zero());
+  codeStart_.assign(n + 1, 0);
+  droppedStart_.assign(n + 1, 0);
+  for (int i = 0; i < n; ++i) {
+    const int blocks = (outer[3 * i + 1] - outer[3 * i]) / 3;
+    codeStart_[i + 1] = codeStart_[i] + blocks;
+    droppedStart_[i + 1] = droppedStart_[i] + static_cast<int>(std::count(blockCode_.begin() + codeStart_[i],
+                                                                           blockCode_.begin() + codeStart_[i + 1],
+                                                                           kDroppedFirstSeen));
+  }
+  droppedFor_.assign(droppedStart_[n], kNoVertex);
+  droppedShare_.assign(droppedStart_[n], Mat3::Zero());
   whole_.blockRows = n;
   whole_.blockColumns = n;
   whole_.rowStart.assign(n + 1, 0);
@@ -104,7 +117,7 @@ void AmgPreconditioner::analyze(const SystemMatrix& A) {
     for (int k = outer[3 * i]; k < outer[3 * i + 1]; k += 3) whole_.column.push_back(rows[k] / 3);
     whole_.rowStart[i + 1] = static_cast<int>(whole_.column.size());
   }
-  whole_.blocks.assign(whole_.column.size(), Mat3::Zero());
+  whole_.blocks.clear();  // sized by gatherWhole when needed
   analyzedPatternVersion_ = A.patternVersion();
   analyzedSize_ = A.matrix().rows();
 }
@@ -120,12 +133,16 @@ void AmgPreconditioner::gather(const SystemMatrix& A) {
   const int* outer = A.matrix().outerIndexPtr();
   const double* values = A.matrix().valuePtr();
   const int n = finest_.blockRows;
-  std::fill(compensation_.begin(), compensation_.end(), Mat3::Zero());
   const int* rows = A.matrix().innerIndexPtr();
-  const int* code = blockCode_.data();
-  for (int i = 0; i < n; ++i) {
+  const int parts = finest_.threadsFor(threads_);
+  // Column block i: its kept blocks into finest_, its dropped pairs' shares for i into
+  // compensation_[i] (after zeroing it: a vertex's own shares are the first it receives), and each
+  // share for j (< i) to `shareForJ(j, share, pair)` (j = kNoVertex: nothing to add).
+  auto gatherColumn = [&](int i, const auto& shareForJ) {
     const double* v[3] = {values + outer[3 * i], values + outer[3 * i + 1], values + outer[3 * i + 2]};
     const int length = outer[3 * i + 1] - outer[3 * i];
+    const int* code = blockCode_.data() + codeStart_[i];
+    int pair = droppedStart_[i];
     for (int k = 0; k < length; k += 3, ++code) {
       if (*code >= 0) {  // block (i, j)(r, c) = A(3j + c, 3i + r): row r is column 3i + r's run
         Mat3& block = finest_.blocks[*code];
@@ -136,12 +153,46 @@ void AmgPreconditioner::gather(const SystemMatrix& A) {
         for (int c = 0; c < 3; ++c)
           for (int r = 0; r < 3; ++r) B(r, c) = v[c][k + r];
         Mat3 forJ, forI;
-        if (!strongCouplingCompensationFast(B, forJ, forI)) continue;
-        compensation_[rows[outer[3 * i] + k] / 3] += forJ;
+        const int thisPair = pair++;
+        if (!strongCouplingCompensationFast(B, forJ, forI)) {
+          shareForJ(kNoVertex, Mat3(), thisPair);
+          continue;
+        }
+        shareForJ(rows[outer[3 * i] + k] / 3, forJ, thisPair);
         compensation_[i] += forI;
       }
     }
+  };
+  if (parts == 1) {
+    std::fill(compensation_.begin(), compensation_.end(), Mat3::Zero());
+    for (int i = 0; i < n; ++i)
+      gatherColumn(i, [&](int j, const Mat3& share, int) {
+        if (j != kNoVertex) compensation_[j] += share;
+      });
+  } else {
+    // The columns side by side, each pair's share for j kept; then those shares added by ranges of
+    // j, in the columns' order. Every vertex's sum takes the same terms in the same order as above:
+    // first its own column's shares (in column i only i's own diagonal is written), then those of
+    // the later columns.
+#pragma omp parallel for num_threads(parts) schedule(static)
+    for (int i = 0; i < n; ++i) {
+      compensation_[i] = Mat3::Zero();
+      gatherColumn(i, [&](int j, const Mat3& share, int pair) {
+        droppedFor_[pair] = j;
+        if (j != kNoVertex) droppedShare_[pair] = share;
+      });
+    }
+#pragma omp parallel for num_threads(parts) schedule(static, 1)
+    for (int part = 0; part < parts; ++part) {
+      const int first = static_cast<int>(static_cast<long>(n) * part / parts);
+      const int end = static_cast<int>(static_cast<long>(n) * (part + 1) / parts);
+      for (int pair = 0; pair < droppedStart_[n]; ++pair) {
+        const int j = droppedFor_[pair];
+        if (j >= first && j < end) compensation_[j] += droppedShare_[pair];
+      }
+    }
   }
+#pragma omp parallel for num_threads(parts) schedule(static)
   for (int i = 0; i < n; ++i)
     if (diagonalSlot_[i] >= 0) finest_.blocks[diagonalSlot_[i]] += compensation_[i];
 }
@@ -151,6 +202,7 @@ void AmgPreconditioner::gatherWhole(const SystemMatrix& A) {
   const int* outer = A.matrix().outerIndexPtr();
   const double* values = A.matrix().valuePtr();
   const int n = whole_.blockRows;
+  whole_.blocks.resize(whole_.column.size());
   double weakNorms = 0.0, offDiagonalNorms = 0.0;
   int slot = 0;
   const int* code = blockCode_.data();
@@ -193,6 +245,7 @@ void AmgPreconditioner::prepare(const SystemMatrix& A) {
       // patch keeps the decision (the hierarchy's patterns follow it).
       if (!wings_) gatherWhole(A);
       wings_ = wingShare_ >= settings_.wingShareThreshold;
+      if (!wings_) std::vector<Mat3>().swap(whole_.blocks);  // not read until the next build's gatherWhole
       hierarchy_.setFinestProductOperator(wings_ ? &whole_ : nullptr);
       hierarchy_.build(finest_);
       ++fullSetups_;

@@ -82,7 +82,9 @@ class AmgPreconditioner final : public Preconditioner {
   AmgHierarchy hierarchy_;
   AmgFloatCycle floatCycle_;
   BlockSparseMatrix finest_;
-  BlockSparseMatrix whole_;  // A itself, every block: the first coarse level's Galerkin operator when wings_
+  // A itself, every block: the first coarse level's Galerkin operator when wings_. Its values are
+  // held only while wings_ or until a build has measured the wings' share (gatherWhole).
+  BlockSparseMatrix whole_;
   bool wings_ = false;       // the wings enter the first Galerkin product (Settings::wingShareThreshold)
   double wingShare_ = 0.0;   // their share of the off-diagonal block norms, at the last gather that measured it
   // Per block of A in its storage order (column block by column block): its slot in finest_, or
@@ -92,6 +94,11 @@ class AmgPreconditioner final : public Preconditioner {
   std::vector<int> blockCode_;
   std::vector<int> diagonalSlot_;   // per vertex: slot of (i, i) in finest_
   std::vector<Mat3> compensation_;  // per vertex: the dropped pairs' sum for its diagonal block
+  // With several threads (gather): per vertex, where its column block starts in blockCode_ and its
+  // first dropped pair (j, i), j < i, in the pair buffers; per pair, j and its share for j.
+  std::vector<int> codeStart_, droppedStart_;
+  std::vector<int> droppedFor_;
+  std::vector<Mat3> droppedShare_;
   int analyzedPatternVersion_ = -1;
   Eigen::Index analyzedSize_ = -1;
   int fullSetups_ = 0;

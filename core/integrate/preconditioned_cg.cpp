@@ -74,6 +74,58 @@ void blockColumnsProduct(const SystemMatrix::Sparse& A, const Eigen::VectorXd& x
   }
 }
 
+// The CG's vector work on long vectors: element-wise updates split over the threads, and dot
+// products summed as partial dots over fixed chunks of kDotChunk entries, added in chunk order, so
+// the same bits for any thread count; a vector of at most one chunk is Eigen's own dot product
+// (the shipped scenes' sizes: their results unchanged).
+constexpr Eigen::Index kDotChunk = 8192;
+
+int vectorParts(Eigen::Index n, int threads) {
+  return static_cast<int>(std::clamp<Eigen::Index>(n / kMinimumColumnsPerThread, 1, std::max(threads, 1)));
+}
+
+double chunkedDot(const Eigen::VectorXd& a, const Eigen::VectorXd& b, int threads, std::vector<double>& partial) {
+  const Eigen::Index n = a.size();
+  if (n <= kDotChunk) return a.dot(b);
+  const int chunks = static_cast<int>((n + kDotChunk - 1) / kDotChunk);
+  partial.resize(chunks);
+#pragma omp parallel for num_threads(std::min(vectorParts(n, threads), chunks)) schedule(static)
+  for (int c = 0; c < chunks; ++c) {
+    const Eigen::Index begin = c * kDotChunk, length = std::min(kDotChunk, n - begin);
+    partial[c] = a.segment(begin, length).dot(b.segment(begin, length));
+  }
+  double sum = 0.0;
+  for (double p : partial) sum += p;
+  return sum;
+}
+
+double chunkedNorm(const Eigen::VectorXd& a, int threads, std::vector<double>& partial) {
+  return a.size() <= kDotChunk ? a.norm() : std::sqrt(chunkedDot(a, a, threads, partial));
+}
+
+// y = y + alpha x, or (with `into`) y = x + alpha y, element by element in fixed ranges.
+void axpy(double alpha, const Eigen::VectorXd& x, Eigen::VectorXd& y, int threads, bool into = false) {
+  const Eigen::Index n = y.size();
+  const int parts = vectorParts(n, threads);
+  if (parts == 1) {
+    if (into) {
+      y = x + alpha * y;
+    } else {
+      y += alpha * x;
+    }
+    return;
+  }
+#pragma omp parallel for num_threads(parts) schedule(static, 1)
+  for (int part = 0; part < parts; ++part) {
+    const Eigen::Index begin = n * part / parts, end = n * (part + 1) / parts;
+    if (into) {
+      y.segment(begin, end - begin) = x.segment(begin, end - begin) + alpha * y.segment(begin, end - begin);
+    } else {
+      y.segment(begin, end - begin) += alpha * x.segment(begin, end - begin);
+    }
+  }
+}
+
 }  // namespace
 
 bool PreconditionedConjugateGradient::hasWholeBlocks(const SystemMatrix::Sparse& A) {
@@ -146,24 +198,24 @@ LinearSolveResult PreconditionedConjugateGradient::solve(const SystemMatrix& A, 
     preconditioner.prepare(A);
     preconditioner.apply(residual_, preconditioned_);
     direction_ = preconditioned_;
-    double rz = residual_.dot(preconditioned_);
+    double rz = chunkedDot(residual_, preconditioned_, threads_, partial_);
     while (result.iterations < maxIterations_) {
       multiply(A, direction_, product_);
-      const double curvature = direction_.dot(product_);
+      const double curvature = chunkedDot(direction_, product_, threads_, partial_);
       if (!(curvature > 0.0)) break;  // A (or M) not positive definite along the direction, or NaN
       const double alpha = rz / curvature;
-      x += alpha * direction_;
-      residual_ -= alpha * product_;
+      axpy(alpha, direction_, x, threads_);
+      axpy(-alpha, product_, residual_, threads_);
       ++result.iterations;
-      residualNorm = residual_.norm();
+      residualNorm = chunkedNorm(residual_, threads_, partial_);
       if (residualNorm <= threshold) break;
       const bool restart = preconditioner.refreshIfStale(A, result.iterations);
       preconditioner.apply(residual_, preconditioned_);
-      const double rzNext = residual_.dot(preconditioned_);
+      const double rzNext = chunkedDot(residual_, preconditioned_, threads_, partial_);
       if (restart) {
         direction_ = preconditioned_;
       } else {
-        direction_ = preconditioned_ + (rzNext / rz) * direction_;
+        axpy(rzNext / rz, preconditioned_, direction_, threads_, /*into=*/true);
       }
       rz = rzNext;
     }

@@ -11,6 +11,8 @@
 // x holds the initial guess on entry (a warm start from the previous step); if it already meets the
 // tolerance the solve returns at once, without touching the preconditioner. The work vectors are
 // members: no allocation once the size is known. Deterministic: a fixed sequence of operations.
+#include <vector>
+
 #include <Eigen/Core>
 
 #include "integrate/linear_solver.h"
@@ -41,6 +43,7 @@ class PreconditionedConjugateGradient {
 
  private:
   int threads_ = 1;
+  std::vector<double> partial_;  // the chunked dot products' partial sums (preconditioned_cg.cpp)
   int checkedPatternVersion_ = -1;
   Eigen::Index checkedSize_ = -1, checkedNonZeros_ = -1;
   const int* checkedIndices_ = nullptr;
