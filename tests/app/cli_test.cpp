@@ -1,6 +1,7 @@
 // The `weft` command line, run as a user would: the built binary (WEFT_BINARY) in a temporary
 // working folder, checking exit codes, messages and the files it writes.
 #include <gtest/gtest.h>
+
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -13,6 +14,7 @@
 #include <random>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -209,6 +211,21 @@ TEST_F(WeftCli, StateHashDoesNotDependOnThreads) {
   EXPECT_EQ(one["threads"], 1);
   EXPECT_EQ(two["threads"], 2);
   EXPECT_EQ(one["state_hash"], two["state_hash"]);
+}
+
+TEST_F(WeftCli, MoreThreadsThanTheMachineHasRunOnAsManyAsItHas) {
+  // Oversubscribed threads only wait on each other (run_command.cpp): the run says so and uses the
+  // machine's count, with the same results.
+  const int machine = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  if (machine + 1 > 256) GTEST_SKIP() << "the machine has more hardware threads than --threads accepts";
+  const Result many =
+      weft("run " + quoted(kHangingSheet) + " " + kTiny + " --quiet --threads " + std::to_string(machine + 1) + " --out many");
+  ASSERT_EQ(many.exitCode, 0) << many.output;
+  EXPECT_NE(many.output.find("using " + std::to_string(machine)), std::string::npos) << many.output;
+  ASSERT_EQ(weft("run " + quoted(kHangingSheet) + " " + kTiny + " --quiet --threads 1 --out one").exitCode, 0);
+  const json manyMetrics = readJson(work() / "many" / "metrics.json");
+  EXPECT_EQ(manyMetrics["threads"], machine);
+  EXPECT_EQ(manyMetrics["state_hash"], readJson(work() / "one" / "metrics.json")["state_hash"]);
 }
 
 // Symplectic Euler at 60 Hz on a stiff woven fabric is far past its stability limit.
