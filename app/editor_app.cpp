@@ -146,6 +146,13 @@ std::unique_ptr<editor::EditorSession> openSession(const EditorOptions& options)
     if (!result.accepted) throw InputError(options.scene.string(), "--set", result.message);
     session->reset();
   }
+  const int requested = session->scene().solver.threads;
+  if (editor::editorSolverThreads(requested) != requested) {
+    std::fprintf(stderr,
+                 "weft edit: solver.threads = %d leaves no core of this machine for drawing; stepping with %d "
+                 "(same results)\n",
+                 requested, editor::editorSolverThreads(requested));
+  }
   return session;
 }
 

@@ -7,6 +7,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <thread>
 
 #include <nlohmann/json.hpp>
 
@@ -183,6 +184,31 @@ TEST(EditorSession, APreconditionerEditAppliesLiveAndUndoRestoresTheDefault) {
   EXPECT_FALSE(session.edit(withPreconditioner(session.json(), "multigrid"), "preconditioner").accepted);
   session.undo();
   EXPECT_EQ(session.world().scene().solver.linearPreconditioner, PreconditionerKind::Amg);
+}
+
+TEST(EditorSession, TheWorldStepsWithAtMostAllButOneCoreAndTheFileKeepsItsThreads) {
+  // editorSolverThreads: the drawing keeps a core; the scene (and what Save writes) keeps the
+  // number asked for, and an edit of it is applied with the same cap.
+  test::TempDir dir;
+  json scene = readJson(kScenes / "hanging-sheet.json");
+  scene["cloths"][0]["mesh"]["grid"]["resolution"] = json::array({8, 8});
+  scene["solver"]["threads"] = 64;
+  const fs::path file = dir.write("scenes/hanging-sheet.json", scene.dump(2));
+  EditorSession session(file);
+  const int machine = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  const int cap = std::max(1, machine - 1);
+  EXPECT_EQ(editorSolverThreads(64), std::min(64, cap));
+  EXPECT_EQ(editorSolverThreads(1), 1);
+  EXPECT_EQ(session.scene().solver.threads, 64);
+  EXPECT_EQ(session.world().scene().solver.threads, std::min(64, cap));
+  json edited = session.json();
+  edited["solver"]["threads"] = 1;
+  ASSERT_TRUE(session.edit(edited, "threads").accepted);
+  EXPECT_EQ(session.world().scene().solver.threads, 1);
+  session.undo();
+  EXPECT_EQ(session.world().scene().solver.threads, std::min(64, cap));
+  session.advanceFrame(kOutputFrame);
+  EXPECT_TRUE(session.world().metrics().finite);
 }
 
 TEST(EditorSession, AResolutionEditWaitsForAReset) {

@@ -6,6 +6,7 @@
 #include <limits>
 #include <stdexcept>
 #include <system_error>
+#include <thread>
 
 #include "editor/installed_data.h"
 #include "scene/scene_json.h"
@@ -28,6 +29,17 @@ Scene parse(const nlohmann::json& j, const std::filesystem::path& file) {
 }
 
 }  // namespace
+
+int editorSolverThreads(int requested) {
+  const int machine = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  return std::clamp(requested, 1, std::max(1, machine - 1));
+}
+
+Scene EditorSession::forTheWorld(const Scene& scene) const {
+  Scene runnable = withPaintedMaps(scene);
+  runnable.solver.threads = editorSolverThreads(runnable.solver.threads);
+  return runnable;
+}
 
 EditorSession::EditorSession(const std::filesystem::path& sceneFile)
     : document_(JsonDocument::open(sceneFile)), scene_(parse(document_.json(), sceneFile)) {
@@ -75,7 +87,7 @@ void EditorSession::redo() {
 void EditorSession::applyDocument(const std::string& label) {
   Scene parsed = parse(document_.json(), document_.file());
   followClothNames(parsed);  // a painting stays with its cloth when cloths are removed or added
-  Scene edited = withPaintedMaps(parsed);  // what the brush painted stays, whatever the file names
+  Scene edited = forTheWorld(parsed);  // what the brush painted stays, whatever the file names
   // A tool's tags saved into the file the scene now names (sharp_tag_edits.h) change only where
   // the tags come from: live when the world's tool already has them (the tags files are read then,
   // so only for an edit the scene alone would reset for).
@@ -100,7 +112,7 @@ void EditorSession::reset() {
 }
 
 void EditorSession::rebuildWorld() {
-  const Scene painted = withPaintedMaps(scene_);
+  const Scene painted = forTheWorld(scene_);
   auto world = std::make_unique<World>(painted);
   if (worker_) {
     collectSteps();
