@@ -11,6 +11,7 @@
 #include "forces/elastic_forces.h"
 #include "sim/cloth.h"
 #include "sim/cloth_topology.h"
+#include "support/elastic_assembly.h"
 #include "support/test_scenes.h"
 #include "tearing/tensile_stress.h"
 
@@ -27,38 +28,6 @@ Cloth stretchedSheet() {
   return cloth;
 }
 
-struct Evaluation {
-  std::vector<Vec3> forces;
-  Eigen::VectorXd hessianValues;
-  ElasticSummary summary;
-};
-
-Evaluation evaluate(const Cloth& cloth, const MembraneAhead* ahead, int threads) {
-  SystemMatrix matrix;
-  const CoupledVertexPairs pairs = coupledVertexPairs(cloth);
-  matrix.setPattern(cloth.mesh.vertexCount(), pairs.edges, pairs.hingeWings);
-  matrix.setZero();
-  ElasticOptions options;
-  options.hessian = HessianMode::Definite;
-  options.threads = threads;
-  options.ahead = ahead;
-  ElasticWorkspace workspace;
-  StageProfile profile;
-  Evaluation out;
-  out.summary = evaluateElasticForces(cloth, cloth.mesh.x, options, workspace, out.forces, &matrix, profile);
-  out.hessianValues = Eigen::Map<const Eigen::VectorXd>(matrix.matrix().valuePtr(), matrix.matrix().nonZeros());
-  return out;
-}
-
-void expectIdentical(const Evaluation& a, const Evaluation& b) {
-  ASSERT_EQ(a.forces.size(), b.forces.size());
-  EXPECT_EQ(0, std::memcmp(a.forces.data(), b.forces.data(), a.forces.size() * sizeof(Vec3)));
-  ASSERT_EQ(a.hessianValues.size(), b.hessianValues.size());
-  EXPECT_EQ(0, std::memcmp(a.hessianValues.data(), b.hessianValues.data(), a.hessianValues.size() * sizeof(double)));
-  EXPECT_EQ(a.summary.membraneEnergy, b.summary.membraneEnergy);
-  EXPECT_EQ(a.summary.maxPrincipalStrain, b.summary.maxPrincipalStrain);
-}
-
 TEST(MembraneAhead, WhatTheAssemblyTakesFromItIsWhatItWouldEvaluate) {
   Cloth cloth = stretchedSheet();
   MembraneAhead ahead;
@@ -69,7 +38,7 @@ TEST(MembraneAhead, WhatTheAssemblyTakesFromItIsWhatItWouldEvaluate) {
     const MembraneElement& e = cloth.membranes[t];
     ASSERT_NE(nullptr, ahead.find(t, e, cloth.mesh.x[e.v[0]], cloth.mesh.x[e.v[1]], cloth.mesh.x[e.v[2]])) << t;
   }
-  for (int threads : {1, 2}) expectIdentical(evaluate(cloth, nullptr, threads), evaluate(cloth, &ahead, threads));
+  for (int threads : {1, 2}) test::expectSameBits(test::assembleElastic(cloth, threads), test::assembleElastic(cloth, threads, &ahead));
 }
 
 TEST(MembraneAhead, IsNotTakenWhereAVertexMovedOrTheLawChanged) {
@@ -91,15 +60,15 @@ TEST(MembraneAhead, IsNotTakenWhereAVertexMovedOrTheLawChanged) {
   }
   EXPECT_EQ(touching, missed);
   EXPECT_GT(touching, 0);
-  for (int threads : {1, 2}) expectIdentical(evaluate(cloth, nullptr, threads), evaluate(cloth, &ahead, threads));
+  for (int threads : {1, 2}) test::expectSameBits(test::assembleElastic(cloth, threads), test::assembleElastic(cloth, threads, &ahead));
   // A live edit of the material: nothing is taken.
   cloth.material.elasticity.stiffnessScale *= 2.0;
   EXPECT_FALSE(ahead.serves(cloth.material.elasticity));
-  for (int threads : {1, 2}) expectIdentical(evaluate(cloth, nullptr, threads), evaluate(cloth, &ahead, threads));
+  for (int threads : {1, 2}) test::expectSameBits(test::assembleElastic(cloth, threads), test::assembleElastic(cloth, threads, &ahead));
   // Another Hessian mode than the one it holds: evaluated too.
   cloth.material.elasticity.stiffnessScale /= 2.0;
   ahead.evaluate(cloth, HessianMode::Exact, 1, profile);
-  expectIdentical(evaluate(cloth, nullptr, 1), evaluate(cloth, &ahead, 1));
+  test::expectSameBits(test::assembleElastic(cloth, 1), test::assembleElastic(cloth, 1, &ahead));
   // After clear, nothing.
   ahead.clear();
   EXPECT_FALSE(ahead.serves(cloth.material.elasticity));
