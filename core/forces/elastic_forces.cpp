@@ -122,14 +122,12 @@ void elementsByPart(const std::vector<Element>& elements, int vertexCount, int p
   out.resize(parts);
   for (std::vector<int>& list : out) list.clear();
   for (int e = 0; e < static_cast<int>(elements.size()); ++e) {
-    int lastPart = -1;
-    std::array<int, 4> seen{-1, -1, -1, -1};
+    std::array<int, 4> seen{};
     int count = 0;
     for (int vertex : elements[e].v) {
       const int part = static_cast<int>(static_cast<long>(vertex) * parts / std::max(vertexCount, 1));
-      if (part == lastPart || std::find(seen.begin(), seen.begin() + count, part) != seen.begin() + count) continue;
+      if (std::find(seen.begin(), seen.begin() + count, part) != seen.begin() + count) continue;
       seen[count++] = part;
-      lastPart = part;
       out[part].push_back(e);
     }
   }
@@ -156,9 +154,10 @@ ElasticSummary evaluateElasticForces(const Cloth& cloth, const std::vector<Vec3>
   const HessianMode mode = hessian ? options.hessian : HessianMode::None;
   if (mode != HessianMode::None) updateBlockStarts(cloth, *hessian, workspace);
   // With one thread each element is added as soon as it is evaluated (its result stays in cache);
-  // with more, all are evaluated in parallel into per-element buffers first. Either way the sums
-  // run in element order over the same numbers, so the result never depends on the thread count.
-  const bool buffered = options.threads > 1;
+  // with more, each thread evaluates the elements touching its range of vertices and adds what
+  // falls in it (addOwnedPart). Either way the sums run in element order over the same numbers, so
+  // the result never depends on the thread count.
+  const bool byParts = options.threads > 1;
   const int vertexCount = static_cast<int>(x.size());
   const int parts = std::clamp(options.threads, 1, std::max(1, vertexCount));
 
@@ -190,7 +189,7 @@ ElasticSummary evaluateElasticForces(const Cloth& cloth, const std::vector<Vec3>
       for (int i = 0; i < 3; ++i) forces[element.v[i]] += r.force[i];
       if (mode != HessianMode::None) addElementHessian<3>(r.hessian, element.v, workspace.membraneBlockStart[t], *hessian);
     };
-    if (buffered) {
+    if (byParts) {
       // Each thread evaluates the triangles touching its vertex range and adds what falls in the
       // range (addOwnedPart says why the sums are those of one thread); a triangle across two ranges
       // is evaluated by both, the same arithmetic on the same numbers. The energies and strains are
@@ -237,7 +236,7 @@ ElasticSummary evaluateElasticForces(const Cloth& cloth, const std::vector<Vec3>
       for (int i = 0; i < 4; ++i) forces[hinge.v[i]] += r.force[i];
       if (mode != HessianMode::None) addElementHessian<4>(r.hessian, hinge.v, workspace.hingeBlockStart[h], *hessian);
     };
-    if (buffered) {
+    if (byParts) {
       // As the membrane's: each thread its vertex range, the energies summed in hinge order.
       elementsByPart(cloth.hinges, vertexCount, parts, workspace.elementsOfPart);
       workspace.energy.resize(hingeCount);
