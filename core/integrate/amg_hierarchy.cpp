@@ -76,7 +76,15 @@ bool AmgHierarchy::patch(const BlockSparseMatrix& finest, const BlockPattern& pr
 }
 
 void AmgHierarchy::refresh(const BlockSparseMatrix& finest, int threads) {
-  levels_[0].A.blocks = finest.blocks;  // same size: no allocation
+  // Same size: no allocation. By rows on the threads that gathered them (the same static split),
+  // so each copies what its own cache holds (a copy on one thread read the other core's half).
+  {
+    BlockSparseMatrix& A = levels_[0].A;
+#pragma omp parallel for num_threads(finest.threadsFor(threads)) schedule(static)
+    for (int i = 0; i < A.blockRows; ++i)
+      std::copy(finest.blocks.begin() + finest.rowStart[i], finest.blocks.begin() + finest.rowStart[i + 1],
+                A.blocks.begin() + A.rowStart[i]);
+  }
   for (int l = 0; l + 1 < levelCount(); ++l) {
     computeDiagonal(levels_[l], threads);
     // omega is kept from the build: rho(D^-1 A) hardly moves while the topology holds, and its
@@ -174,7 +182,6 @@ void AmgHierarchy::galerkinProduct(int l, int threads) {
   // what falls in its range: every coarse block receives the same terms in the same order as from
   // one thread going through them all.
   BlockSparseMatrix& Ac = coarse.A;
-  Ac.setZero();
   const int parts = std::min(A.threadsFor(threads), std::max(1, Ac.blockRows));
   galerkinRowStart_.resize(A.blockRows + 1);
   galerkinRowStart_[0] = 0;
@@ -185,6 +192,7 @@ void AmgHierarchy::galerkinProduct(int l, int threads) {
   for (int part = 0; part < parts; ++part) {
     const int first = static_cast<int>(static_cast<long>(Ac.blockRows) * part / parts);
     const int end = static_cast<int>(static_cast<long>(Ac.blockRows) * (part + 1) / parts);
+    std::fill(Ac.blocks.begin() + Ac.rowStart[first], Ac.blocks.begin() + Ac.rowStart[end], Mat3::Zero());
     for (int i = 0; i < A.blockRows; ++i) {
       const int length = AP.rowStart[i + 1] - AP.rowStart[i];
       const int* slot = fine.galerkinSlots.data() + galerkinRowStart_[i];
@@ -195,12 +203,19 @@ void AmgHierarchy::galerkinProduct(int l, int threads) {
       }
     }
   }
-  for (int s = 0; s < Ac.blockCount(); ++s) {
-    const int t = coarse.transposeSlots[s];
-    if (t < s) continue;
-    const Mat3 symmetric = 0.5 * (Ac.blocks[s] + Ac.blocks[t].transpose());
-    Ac.blocks[s] = symmetric;
-    Ac.blocks[t] = symmetric.transpose();
+  // Symmetrized pair by pair: the pair of slots s <= t is done where s lies (no other touches t),
+  // by the same coarse-row ranges, so each thread reads the rows it has just summed.
+#pragma omp parallel for num_threads(parts) schedule(static, 1)
+  for (int part = 0; part < parts; ++part) {
+    const int first = static_cast<int>(static_cast<long>(Ac.blockRows) * part / parts);
+    const int end = static_cast<int>(static_cast<long>(Ac.blockRows) * (part + 1) / parts);
+    for (int s = Ac.rowStart[first]; s < Ac.rowStart[end]; ++s) {
+      const int t = coarse.transposeSlots[s];
+      if (t < s) continue;
+      const Mat3 symmetric = 0.5 * (Ac.blocks[s] + Ac.blocks[t].transpose());
+      Ac.blocks[s] = symmetric;
+      Ac.blocks[t] = symmetric.transpose();
+    }
   }
 }
 

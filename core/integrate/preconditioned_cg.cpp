@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <omp.h>
+
 namespace weft {
 namespace {
 
@@ -176,6 +178,86 @@ void PreconditionedConjugateGradient::multiply(const SystemMatrix& A, const Eige
                         static_cast<int>(static_cast<long>(blocks) * (part + 1) / parts));
 }
 
+bool PreconditionedConjugateGradient::fusedStep(const SystemMatrix& A, double rz, Eigen::VectorXd& x, double& alpha,
+                                                double& residualNorm) {
+  // One parallel region for what needs no preconditioner: q = A d, d.q, the updates of x and r,
+  // and |r|. Each dot is the chunked one (partials over fixed chunks, summed in chunk order by
+  // every thread alike), each update element-wise: the bits of the separate calls in solve().
+  // Fewer forks matter at 64^2, where one of these operations takes a few microseconds, about
+  // what a fork and join of two threads cost.
+  const Eigen::Index n = x.size();
+  const int blocks = static_cast<int>(n / 3);
+  const int chunks = static_cast<int>((n + kDotChunk - 1) / kDotChunk);
+  partial_.resize(2 * static_cast<std::size_t>(chunks));
+  product_.resize(n);
+  double* partial = partial_.data();
+  bool positive = true;
+#pragma omp parallel num_threads(vectorParts(n, threads_))
+  {
+    const int parts = omp_get_num_threads(), part = omp_get_thread_num();
+    blockColumnsProduct(A.matrix(), direction_, product_, static_cast<int>(static_cast<long>(blocks) * part / parts),
+                        static_cast<int>(static_cast<long>(blocks) * (part + 1) / parts));
+#pragma omp barrier
+#pragma omp for schedule(static)
+    for (int c = 0; c < chunks; ++c) {
+      const Eigen::Index begin = c * kDotChunk, length = std::min(kDotChunk, n - begin);
+      partial[c] = direction_.segment(begin, length).dot(product_.segment(begin, length));
+    }
+    double curvature = 0.0;
+    for (int c = 0; c < chunks; ++c) curvature += partial[c];
+    if (curvature > 0.0) {  // the same on every thread
+      const double step = rz / curvature;
+      const Eigen::Index begin = n * part / parts, end = n * (part + 1) / parts;
+      x.segment(begin, end - begin) += step * direction_.segment(begin, end - begin);
+      residual_.segment(begin, end - begin) += -step * product_.segment(begin, end - begin);
+#pragma omp barrier
+#pragma omp for schedule(static)
+      for (int c = 0; c < chunks; ++c) {
+        const Eigen::Index first = c * kDotChunk, length = std::min(kDotChunk, n - first);
+        partial[chunks + c] = residual_.segment(first, length).dot(residual_.segment(first, length));
+      }
+      if (part == 0) alpha = step;
+    } else {
+      if (part == 0) positive = false;  // A (or M) not positive definite along the direction, or NaN
+    }
+  }
+  if (!positive) return false;
+  double squared = 0.0;
+  for (int c = 0; c < chunks; ++c) squared += partial[chunks + c];
+  residualNorm = std::sqrt(squared);
+  return true;
+}
+
+double PreconditionedConjugateGradient::fusedDirection(double rz, bool restart) {
+  // rz' = r.z (chunked), then d = z (a restart) or d = z + (rz' / rz) d, in one parallel region.
+  const Eigen::Index n = residual_.size();
+  const int chunks = static_cast<int>((n + kDotChunk - 1) / kDotChunk);
+  partial_.resize(std::max<std::size_t>(partial_.size(), chunks));
+  double* partial = partial_.data();
+  double rzNext = 0.0;
+#pragma omp parallel num_threads(vectorParts(n, threads_))
+  {
+    const int parts = omp_get_num_threads(), part = omp_get_thread_num();
+#pragma omp for schedule(static)
+    for (int c = 0; c < chunks; ++c) {
+      const Eigen::Index begin = c * kDotChunk, length = std::min(kDotChunk, n - begin);
+      partial[c] = residual_.segment(begin, length).dot(preconditioned_.segment(begin, length));
+    }
+    double sum = 0.0;
+    for (int c = 0; c < chunks; ++c) sum += partial[c];
+    const Eigen::Index begin = n * part / parts, end = n * (part + 1) / parts;
+    if (restart) {
+      direction_.segment(begin, end - begin) = preconditioned_.segment(begin, end - begin);
+    } else {
+      const double beta = sum / rz;
+      direction_.segment(begin, end - begin) =
+          preconditioned_.segment(begin, end - begin) + beta * direction_.segment(begin, end - begin);
+    }
+    if (part == 0) rzNext = sum;
+  }
+  return rzNext;
+}
+
 LinearSolveResult PreconditionedConjugateGradient::solve(const SystemMatrix& A, const Eigen::VectorXd& b,
                                                         double rhsNormFloor, Preconditioner& preconditioner,
                                                         Eigen::VectorXd& x) {
@@ -199,18 +281,30 @@ LinearSolveResult PreconditionedConjugateGradient::solve(const SystemMatrix& A, 
     preconditioner.apply(residual_, preconditioned_);
     direction_ = preconditioned_;
     double rz = chunkedDot(residual_, preconditioned_, threads_, partial_);
+    // Several threads on a whole-block matrix: each iteration's vector work in two parallel regions
+    // around the preconditioner (fusedSteps), the same operations as below, so the same bits.
+    const bool fused = wholeBlocks_ && vectorParts(b.size(), threads_) > 1 && b.size() > kDotChunk;
     while (result.iterations < maxIterations_) {
-      multiply(A, direction_, product_);
-      const double curvature = chunkedDot(direction_, product_, threads_, partial_);
-      if (!(curvature > 0.0)) break;  // A (or M) not positive definite along the direction, or NaN
-      const double alpha = rz / curvature;
-      axpy(alpha, direction_, x, threads_);
-      axpy(-alpha, product_, residual_, threads_);
+      double alpha = 0.0;
+      if (fused) {
+        if (!fusedStep(A, rz, x, alpha, residualNorm)) break;
+      } else {
+        multiply(A, direction_, product_);
+        const double curvature = chunkedDot(direction_, product_, threads_, partial_);
+        if (!(curvature > 0.0)) break;  // A (or M) not positive definite along the direction, or NaN
+        alpha = rz / curvature;
+        axpy(alpha, direction_, x, threads_);
+        axpy(-alpha, product_, residual_, threads_);
+        residualNorm = chunkedNorm(residual_, threads_, partial_);
+      }
       ++result.iterations;
-      residualNorm = chunkedNorm(residual_, threads_, partial_);
       if (residualNorm <= threshold) break;
       const bool restart = preconditioner.refreshIfStale(A, result.iterations);
       preconditioner.apply(residual_, preconditioned_);
+      if (fused) {
+        rz = fusedDirection(rz, restart);
+        continue;
+      }
       const double rzNext = chunkedDot(residual_, preconditioned_, threads_, partial_);
       if (restart) {
         direction_ = preconditioned_;

@@ -296,6 +296,9 @@ TEST(AmgPreconditioner, SolveIsTheSameBitsWithOneAndTwoThreads) {
   // 64²: large enough that the CG's products and the finest level's row-wise parts (residual,
   // prolongation, gathering, prolongator smoothing, A P) do split over two threads (the scene
   // test above, at 16², stays below their thresholds).
+  // The second level (703 rows) splits too, by its blocks (BlockSparseMatrix::kBlocksPerThread),
+  // and with two threads the CG does each iteration's vector work in two parallel regions
+  // (PreconditionedConjugateGradient::fusedStep): one thread does it call by call.
   const ClothSystem system = movingSheetSystem(64, 3);
   ASSERT_GE(system.A.vertexCount(), 2 * BlockSparseMatrix::kRowsPerThread);
   std::vector<Eigen::VectorXd> answers;
@@ -307,6 +310,9 @@ TEST(AmgPreconditioner, SolveIsTheSameBitsWithOneAndTwoThreads) {
     cg.setThreads(threads);
     Eigen::VectorXd x = Eigen::VectorXd::Zero(system.b.size());
     EXPECT_TRUE(cg.solve(system.A, system.b, 0.0, amg, x).converged);  // the build
+    ASSERT_GE(amg.hierarchy().levelCount(), 3);
+    EXPECT_LT(amg.hierarchy().level(1).A.blockRows, BlockSparseMatrix::kRowsPerThread);
+    EXPECT_GE(amg.hierarchy().level(1).A.blockCount(), BlockSparseMatrix::kBlocksPerThread);
     Eigen::VectorXd again = Eigen::VectorXd::Zero(system.b.size());
     const LinearSolveResult result = cg.solve(system.A, system.b, 0.0, amg, again);  // a refresh
     EXPECT_TRUE(result.converged);
