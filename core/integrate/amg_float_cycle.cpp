@@ -232,6 +232,126 @@ void AmgFloatCycle::cycle(const AmgHierarchy& hierarchy, int l, int sweeps, int 
   for (int sweep = 0; sweep < sweeps; ++sweep) sweepBackward(level, threads, solveRow);
 }
 
+void AmgFloatCycle::applyInTeam(const AmgHierarchy& hierarchy, const Eigen::VectorXd& inR, Eigen::VectorXd& outZ,
+                                int sweeps) {
+  Level& finest = levels_[0];
+#pragma omp single
+  outZ.resize(inR.size());
+#pragma omp for schedule(static)
+  for (int i = 0; i < finest.rows; ++i)
+    finest.b[i] = Float4{static_cast<float>(inR[3 * i]), static_cast<float>(inR[3 * i + 1]),
+                         static_cast<float>(inR[3 * i + 2]), 0.0f};
+  cycleInTeam(hierarchy, 0, std::max(sweeps, 1));
+#pragma omp for schedule(static)
+  for (int i = 0; i < finest.rows; ++i)
+    for (int c = 0; c < 3; ++c) outZ[3 * i + c] = finest.x[i][c];
+}
+
+void AmgFloatCycle::cycleInTeam(const AmgHierarchy& hierarchy, int l, int sweeps) {
+  Level& level = levels_[l];
+  const int n = level.rows;
+  if (l + 1 == hierarchy.levelCount() || n < kCycleRowsPerThread) {
+    // Too small to share (as apply's threadsFor): this level and those below on one thread.
+#pragma omp single
+    cycle(hierarchy, l, sweeps, 1);
+    return;
+  }
+  // The passes of cycle(), row for row.
+  const Float4* off = level.off.data();
+  const Float4* inverseDiagonal = level.inverseDiagonal.data();
+  Float4* x = level.x.data();
+  const Float4* b = level.b.data();
+  sweepForwardInTeam(level, [&](int i) {
+    Float4 sum = b[i];
+    for (int k = level.offStart[i]; k < level.laterStart[i]; ++k) sum -= times(off + 3 * k, x[level.offColumn[k]]);
+    x[i] = times(inverseDiagonal + 3 * i, sum);
+  });
+  auto solveRow = [&](int i) {
+    Float4 sum = b[i];
+    for (int k = level.offStart[i]; k < level.offStart[i + 1]; ++k) sum -= times(off + 3 * k, x[level.offColumn[k]]);
+    x[i] = times(inverseDiagonal + 3 * i, sum);
+  };
+  for (int sweep = 1; sweep < sweeps; ++sweep) sweepForwardInTeam(level, solveRow);
+  Level& coarse = levels_[l + 1];
+  Float4* r = level.r.data();
+  if (sweeps == 1) {
+#pragma omp for schedule(static)
+    for (int i = 0; i < n; ++i) {
+      Float4 sum = Float4{};
+      for (int k = level.laterStart[i]; k < level.offStart[i + 1]; ++k) sum -= times(off + 3 * k, x[level.offColumn[k]]);
+      r[i] = sum;
+    }
+  } else {
+#pragma omp for schedule(static)
+    for (int i = 0; i < n; ++i) {
+      Float4 sum = b[i] - times(level.diagonal.data() + 3 * i, x[i]);
+      for (int k = level.offStart[i]; k < level.offStart[i + 1]; ++k) sum -= times(off + 3 * k, x[level.offColumn[k]]);
+      r[i] = sum;
+    }
+  }
+  auto restrictRow = [&](int J) {
+    Float4 sum = Float4{};
+    for (int k = level.transposeStart[J]; k < level.transposeStart[J + 1]; ++k)
+      sum += times(level.pt.data() + 3 * k, r[level.transposeColumn[k]]);
+    coarse.b[J] = sum;
+  };
+  if (coarse.rows >= kCycleRowsPerThread) {
+#pragma omp for schedule(static)
+    for (int J = 0; J < coarse.rows; ++J) restrictRow(J);
+  } else {
+#pragma omp single
+    for (int J = 0; J < coarse.rows; ++J) restrictRow(J);
+  }
+  cycleInTeam(hierarchy, l + 1, sweeps);
+  const BlockSparseMatrix& P = hierarchy.level(l).P;
+  const Float4* e = coarse.x.data();
+#pragma omp for schedule(static)
+  for (int i = 0; i < n; ++i) {
+    Float4 sum = Float4{};
+    for (int k = P.rowStart[i]; k < P.rowStart[i + 1]; ++k) sum += times(level.p.data() + 3 * k, e[P.column[k]]);
+    x[i] += sum;
+  }
+  for (int sweep = 0; sweep < sweeps; ++sweep) sweepBackwardInTeam(level, solveRow);
+}
+
+template <typename Row>
+void AmgFloatCycle::sweepForwardInTeam(const Level& level, const Row& row) {
+  if (level.split == 0) {
+#pragma omp single
+    for (int i = 0; i < level.rows; ++i) row(i);
+    return;
+  }
+#pragma omp for schedule(static, 1)
+  for (int group = 0; group < 2; ++group) {
+    if (group == 0) {
+      for (int i = 0; i < level.split; ++i) row(i);
+    } else {
+      for (int i : level.secondGroup) row(i);
+    }
+  }
+#pragma omp single
+  for (int i : level.interfaceRows) row(i);
+}
+
+template <typename Row>
+void AmgFloatCycle::sweepBackwardInTeam(const Level& level, const Row& row) {
+  if (level.split == 0) {
+#pragma omp single
+    for (int i = level.rows - 1; i >= 0; --i) row(i);
+    return;
+  }
+#pragma omp single
+  for (auto i = level.interfaceRows.rbegin(); i != level.interfaceRows.rend(); ++i) row(*i);
+#pragma omp for schedule(static, 1)
+  for (int group = 0; group < 2; ++group) {
+    if (group == 0) {
+      for (int i = level.split - 1; i >= 0; --i) row(i);
+    } else {
+      for (auto i = level.secondGroup.rbegin(); i != level.secondGroup.rend(); ++i) row(*i);
+    }
+  }
+}
+
 template <typename Row>
 void AmgFloatCycle::sweepForward(const Level& level, int threads, const Row& row) {
   if (level.split == 0) {

@@ -296,4 +296,13 @@ void AmgPreconditioner::apply(const Eigen::VectorXd& inR, Eigen::VectorXd& outZ)
   cycle(0, inR, outZ);
 }
 
+void AmgPreconditioner::applyInTeam(const Eigen::VectorXd& inR, Eigen::VectorXd& outZ) {
+  if (!appliesInTeam()) {
+#pragma omp single
+    apply(inR, outZ);
+    return;
+  }
+  floatCycle_.applyInTeam(hierarchy_, inR, outZ, settings_.smoothingSweeps);
+}
+
 }  // namespace weft

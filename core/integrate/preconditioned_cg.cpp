@@ -178,84 +178,89 @@ void PreconditionedConjugateGradient::multiply(const SystemMatrix& A, const Eige
                         static_cast<int>(static_cast<long>(blocks) * (part + 1) / parts));
 }
 
-bool PreconditionedConjugateGradient::fusedStep(const SystemMatrix& A, double rz, Eigen::VectorXd& x, double& alpha,
-                                                double& residualNorm) {
-  // One parallel region for what needs no preconditioner: q = A d, d.q, the updates of x and r,
-  // and |r|. Each dot is the chunked one (partials over fixed chunks, summed in chunk order by
-  // every thread alike), each update element-wise: the bits of the separate calls in solve().
-  // Fewer forks matter at 64^2, where one of these operations takes a few microseconds, about
-  // what a fork and join of two threads cost.
+int PreconditionedConjugateGradient::iterateInTeam(const SystemMatrix& A, double threshold, Preconditioner& preconditioner,
+                                                   double rz, Eigen::VectorXd& x, double& residualNorm) {
+  // The iterations of solve() below in one parallel region: each thread takes a fixed range of
+  // the product's block columns and of the element-wise updates, the dots are the chunked ones
+  // (partials over fixed chunks, summed in chunk order by every thread alike, so every thread holds
+  // the same scalars and takes the same branches), and the preconditioner is applied by the team
+  // (Preconditioner::applyInTeam) or by one of its threads. The same operations on every entry as
+  // the loop in solve(), so the same bits. Why: at 64^2 one of these operations takes a few
+  // microseconds, about what starting two threads costs on the 2-core machine (docs/solver.md,
+  // round 9); barriers cost half of that.
   const Eigen::Index n = x.size();
   const int blocks = static_cast<int>(n / 3);
   const int chunks = static_cast<int>((n + kDotChunk - 1) / kDotChunk);
-  partial_.resize(2 * static_cast<std::size_t>(chunks));
+  partial_.assign(2 * static_cast<std::size_t>(chunks), 0.0);
   product_.resize(n);
   double* partial = partial_.data();
-  bool positive = true;
+  const bool team = preconditioner.appliesInTeam();
+  int iterations = 0;
 #pragma omp parallel num_threads(vectorParts(n, threads_))
   {
     const int parts = omp_get_num_threads(), part = omp_get_thread_num();
-    blockColumnsProduct(A.matrix(), direction_, product_, static_cast<int>(static_cast<long>(blocks) * part / parts),
-                        static_cast<int>(static_cast<long>(blocks) * (part + 1) / parts));
-#pragma omp barrier
-#pragma omp for schedule(static)
-    for (int c = 0; c < chunks; ++c) {
-      const Eigen::Index begin = c * kDotChunk, length = std::min(kDotChunk, n - begin);
-      partial[c] = direction_.segment(begin, length).dot(product_.segment(begin, length));
-    }
-    double curvature = 0.0;
-    for (int c = 0; c < chunks; ++c) curvature += partial[c];
-    if (curvature > 0.0) {  // the same on every thread
-      const double step = rz / curvature;
-      const Eigen::Index begin = n * part / parts, end = n * (part + 1) / parts;
-      x.segment(begin, end - begin) += step * direction_.segment(begin, end - begin);
-      residual_.segment(begin, end - begin) += -step * product_.segment(begin, end - begin);
+    const int firstBlock = static_cast<int>(static_cast<long>(blocks) * part / parts);
+    const int endBlock = static_cast<int>(static_cast<long>(blocks) * (part + 1) / parts);
+    const Eigen::Index begin = n * part / parts, length = n * (part + 1) / parts - begin;
+    auto chunkedSum = [&](const double* sums) {
+      double sum = 0.0;
+      for (int c = 0; c < chunks; ++c) sum += sums[c];
+      return sum;
+    };
+    double ownRz = rz, norm = residualNorm;
+    int done = 0;
+    while (done < maxIterations_) {
+      blockColumnsProduct(A.matrix(), direction_, product_, firstBlock, endBlock);
 #pragma omp barrier
 #pragma omp for schedule(static)
       for (int c = 0; c < chunks; ++c) {
-        const Eigen::Index first = c * kDotChunk, length = std::min(kDotChunk, n - first);
-        partial[chunks + c] = residual_.segment(first, length).dot(residual_.segment(first, length));
+        const Eigen::Index first = c * kDotChunk, size = std::min(kDotChunk, n - first);
+        partial[c] = direction_.segment(first, size).dot(product_.segment(first, size));
       }
-      if (part == 0) alpha = step;
-    } else {
-      if (part == 0) positive = false;  // A (or M) not positive definite along the direction, or NaN
-    }
-  }
-  if (!positive) return false;
-  double squared = 0.0;
-  for (int c = 0; c < chunks; ++c) squared += partial[chunks + c];
-  residualNorm = std::sqrt(squared);
-  return true;
-}
-
-double PreconditionedConjugateGradient::fusedDirection(double rz, bool restart) {
-  // rz' = r.z (chunked), then d = z (a restart) or d = z + (rz' / rz) d, in one parallel region.
-  const Eigen::Index n = residual_.size();
-  const int chunks = static_cast<int>((n + kDotChunk - 1) / kDotChunk);
-  partial_.resize(std::max<std::size_t>(partial_.size(), chunks));
-  double* partial = partial_.data();
-  double rzNext = 0.0;
-#pragma omp parallel num_threads(vectorParts(n, threads_))
-  {
-    const int parts = omp_get_num_threads(), part = omp_get_thread_num();
+      const double curvature = chunkedSum(partial);
+      if (!(curvature > 0.0)) break;  // A (or M) not positive definite along the direction, or NaN
+      const double alpha = ownRz / curvature;
+      x.segment(begin, length) += alpha * direction_.segment(begin, length);
+      residual_.segment(begin, length) += -alpha * product_.segment(begin, length);
+#pragma omp barrier
 #pragma omp for schedule(static)
-    for (int c = 0; c < chunks; ++c) {
-      const Eigen::Index begin = c * kDotChunk, length = std::min(kDotChunk, n - begin);
-      partial[c] = residual_.segment(begin, length).dot(preconditioned_.segment(begin, length));
+      for (int c = 0; c < chunks; ++c) {
+        const Eigen::Index first = c * kDotChunk, size = std::min(kDotChunk, n - first);
+        partial[chunks + c] = residual_.segment(first, size).dot(residual_.segment(first, size));
+      }
+      norm = std::sqrt(chunkedSum(partial + chunks));
+      ++done;
+      if (norm <= threshold) break;
+      bool restart = false;
+#pragma omp single copyprivate(restart)
+      restart = preconditioner.refreshIfStale(A, done);
+      if (team) {
+        preconditioner.applyInTeam(residual_, preconditioned_);
+      } else {
+#pragma omp single
+        preconditioner.apply(residual_, preconditioned_);
+      }
+#pragma omp for schedule(static)
+      for (int c = 0; c < chunks; ++c) {
+        const Eigen::Index first = c * kDotChunk, size = std::min(kDotChunk, n - first);
+        partial[c] = residual_.segment(first, size).dot(preconditioned_.segment(first, size));
+      }
+      const double rzNext = chunkedSum(partial);
+      if (restart) {
+        direction_.segment(begin, length) = preconditioned_.segment(begin, length);
+      } else {
+        direction_.segment(begin, length) =
+            preconditioned_.segment(begin, length) + (rzNext / ownRz) * direction_.segment(begin, length);
+      }
+      ownRz = rzNext;
+#pragma omp barrier
     }
-    double sum = 0.0;
-    for (int c = 0; c < chunks; ++c) sum += partial[c];
-    const Eigen::Index begin = n * part / parts, end = n * (part + 1) / parts;
-    if (restart) {
-      direction_.segment(begin, end - begin) = preconditioned_.segment(begin, end - begin);
-    } else {
-      const double beta = sum / rz;
-      direction_.segment(begin, end - begin) =
-          preconditioned_.segment(begin, end - begin) + beta * direction_.segment(begin, end - begin);
+    if (part == 0) {
+      iterations = done;
+      residualNorm = norm;
     }
-    if (part == 0) rzNext = sum;
   }
-  return rzNext;
+  return iterations;
 }
 
 LinearSolveResult PreconditionedConjugateGradient::solve(const SystemMatrix& A, const Eigen::VectorXd& b,
@@ -281,30 +286,22 @@ LinearSolveResult PreconditionedConjugateGradient::solve(const SystemMatrix& A, 
     preconditioner.apply(residual_, preconditioned_);
     direction_ = preconditioned_;
     double rz = chunkedDot(residual_, preconditioned_, threads_, partial_);
-    // Several threads on a whole-block matrix: each iteration's vector work in two parallel regions
-    // around the preconditioner (fusedSteps), the same operations as below, so the same bits.
-    const bool fused = wholeBlocks_ && vectorParts(b.size(), threads_) > 1 && b.size() > kDotChunk;
-    while (result.iterations < maxIterations_) {
-      double alpha = 0.0;
-      if (fused) {
-        if (!fusedStep(A, rz, x, alpha, residualNorm)) break;
-      } else {
-        multiply(A, direction_, product_);
-        const double curvature = chunkedDot(direction_, product_, threads_, partial_);
-        if (!(curvature > 0.0)) break;  // A (or M) not positive definite along the direction, or NaN
-        alpha = rz / curvature;
-        axpy(alpha, direction_, x, threads_);
-        axpy(-alpha, product_, residual_, threads_);
-        residualNorm = chunkedNorm(residual_, threads_, partial_);
-      }
+    // Several threads on a whole-block matrix: the iterations in one parallel region
+    // (iterateInTeam), the same operations as below, so the same bits.
+    const bool inTeam = wholeBlocks_ && vectorParts(b.size(), threads_) > 1 && b.size() > kDotChunk;
+    if (inTeam) result.iterations = iterateInTeam(A, threshold, preconditioner, rz, x, residualNorm);
+    while (!inTeam && result.iterations < maxIterations_) {
+      multiply(A, direction_, product_);
+      const double curvature = chunkedDot(direction_, product_, threads_, partial_);
+      if (!(curvature > 0.0)) break;  // A (or M) not positive definite along the direction, or NaN
+      const double alpha = rz / curvature;
+      axpy(alpha, direction_, x, threads_);
+      axpy(-alpha, product_, residual_, threads_);
       ++result.iterations;
+      residualNorm = chunkedNorm(residual_, threads_, partial_);
       if (residualNorm <= threshold) break;
       const bool restart = preconditioner.refreshIfStale(A, result.iterations);
       preconditioner.apply(residual_, preconditioned_);
-      if (fused) {
-        rz = fusedDirection(rz, restart);
-        continue;
-      }
       const double rzNext = chunkedDot(residual_, preconditioned_, threads_, partial_);
       if (restart) {
         direction_ = preconditioned_;

@@ -42,10 +42,10 @@ class PreconditionedConjugateGradient {
   static bool hasWholeBlocks(const SystemMatrix::Sparse& A);
 
  private:
-  // With several threads: one iteration's q = A d, alpha, x and r updates and |r| in one parallel
-  // region (false when d.q is not positive); then r.z and the new direction in another.
-  bool fusedStep(const SystemMatrix& A, double rz, Eigen::VectorXd& x, double& alpha, double& residualNorm);
-  double fusedDirection(double rz, bool restart);
+  // With several threads: the iterations from the first direction on, in one parallel region;
+  // returns their count and leaves |r| in residualNorm.
+  int iterateInTeam(const SystemMatrix& A, double threshold, Preconditioner& preconditioner, double rz,
+                    Eigen::VectorXd& x, double& residualNorm);
   int threads_ = 1;
   std::vector<double> partial_;  // the chunked dot products' partial sums (preconditioned_cg.cpp)
   int checkedPatternVersion_ = -1;
