@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include <omp.h>
+
 namespace weft {
 namespace {
 
@@ -144,23 +146,70 @@ void AmgFloatCycle::refresh(const AmgHierarchy& hierarchy, int threads) {
 
 void AmgFloatCycle::apply(const AmgHierarchy& hierarchy, const Eigen::VectorXd& inR, Eigen::VectorXd& outZ, int sweeps,
                           int threads) {
-  Level& finest = levels_[0];
-  const int rowThreads = threadsFor(finest.rows, threads);
-#pragma omp parallel for num_threads(rowThreads) schedule(static)
-  for (int i = 0; i < finest.rows; ++i)
-    finest.b[i] = Float4{static_cast<float>(inR[3 * i]), static_cast<float>(inR[3 * i + 1]),
-                         static_cast<float>(inR[3 * i + 2]), 0.0f};
-  cycle(hierarchy, 0, std::max(sweeps, 1), threads);
-  outZ.resize(inR.size());
-#pragma omp parallel for num_threads(rowThreads) schedule(static)
-  for (int i = 0; i < finest.rows; ++i)
-    for (int c = 0; c < 3; ++c) outZ[3 * i + c] = finest.x[i][c];
+  if (threads <= 1 || levels_[0].rows < kCycleRowsPerThread) {
+    applyWith(hierarchy, inR, outZ, sweeps, false);
+    return;
+  }
+#pragma omp parallel num_threads(threads)
+  applyInTeam(hierarchy, inR, outZ, sweeps);
 }
 
-void AmgFloatCycle::cycle(const AmgHierarchy& hierarchy, int l, int sweeps, int threads) {
+void AmgFloatCycle::applyInTeam(const AmgHierarchy& hierarchy, const Eigen::VectorXd& inR, Eigen::VectorXd& outZ,
+                                int sweeps) {
+  if (omp_get_num_threads() == 1) {
+    applyWith(hierarchy, inR, outZ, sweeps, false);
+  } else if (levels_[0].rows < kCycleRowsPerThread) {
+#pragma omp single
+    applyWith(hierarchy, inR, outZ, sweeps, false);
+  } else {
+    applyWith(hierarchy, inR, outZ, sweeps, true);
+  }
+}
+
+void AmgFloatCycle::applyWith(const AmgHierarchy& hierarchy, const Eigen::VectorXd& inR, Eigen::VectorXd& outZ,
+                              int sweeps, bool shared) {
+  Level& finest = levels_[0];
+  once(shared, [&] { outZ.resize(inR.size()); });
+  forRows(shared, finest.rows, [&](int i) {
+    finest.b[i] = Float4{static_cast<float>(inR[3 * i]), static_cast<float>(inR[3 * i + 1]),
+                         static_cast<float>(inR[3 * i + 2]), 0.0f};
+  });
+  cycle(hierarchy, 0, std::max(sweeps, 1), shared);
+  forRows(shared, finest.rows, [&](int i) {
+    for (int c = 0; c < 3; ++c) outZ[3 * i + c] = finest.x[i][c];
+  });
+}
+
+template <typename Body>
+void AmgFloatCycle::forRows(bool shared, int rows, const Body& body) {
+  if (!shared) {
+    for (int i = 0; i < rows; ++i) body(i);
+    return;
+  }
+#pragma omp for schedule(static)
+  for (int i = 0; i < rows; ++i) body(i);
+}
+
+template <typename Body>
+void AmgFloatCycle::once(bool shared, const Body& body) {
+  if (!shared) {
+    body();
+    return;
+  }
+#pragma omp single
+  body();
+}
+
+void AmgFloatCycle::cycle(const AmgHierarchy& hierarchy, int l, int sweeps, bool shared) {
   Level& level = levels_[l];
   const int n = level.rows;
   const bool coarsest = l + 1 == hierarchy.levelCount();
+  if (shared && (coarsest || n < kCycleRowsPerThread)) {
+    // Too small to share: this level and those below on one thread of the team.
+#pragma omp single
+    cycle(hierarchy, l, sweeps, false);
+    return;
+  }
   if (coarsest && hierarchy.coarsestFactored()) {
     // The coarsest level's dense Cholesky solve, in double (a few dozen unknowns).
     coarsestRhs_.resize(3 * static_cast<Eigen::Index>(n));
@@ -177,7 +226,7 @@ void AmgFloatCycle::cycle(const AmgHierarchy& hierarchy, int l, int sweeps, int 
   Float4* x = level.x.data();
   const Float4* b = level.b.data();
   // First forward sweep from x = 0: the blocks of rows later in the order multiply zeros, skip them.
-  sweepForward(level, threads, [&](int i) {
+  sweepForward(level, shared, [&](int i) {
     Float4 sum = b[i];
     for (int k = level.offStart[i]; k < level.laterStart[i]; ++k) sum -= times(off + 3 * k, x[level.offColumn[k]]);
     x[i] = times(inverseDiagonal + 3 * i, sum);
@@ -187,203 +236,88 @@ void AmgFloatCycle::cycle(const AmgHierarchy& hierarchy, int l, int sweeps, int 
     for (int k = level.offStart[i]; k < level.offStart[i + 1]; ++k) sum -= times(off + 3 * k, x[level.offColumn[k]]);
     x[i] = times(inverseDiagonal + 3 * i, sum);
   };
-  for (int sweep = 1; sweep < sweeps; ++sweep) sweepForward(level, threads, solveRow);
+  for (int sweep = 1; sweep < sweeps; ++sweep) sweepForward(level, shared, solveRow);
   if (!coarsest) {
     Level& coarse = levels_[l + 1];
     Float4* r = level.r.data();
-    const int rowThreads = threadsFor(n, threads);
     // The residual b - A x. After one sweep from zero each row's equation was met with the rows
     // before it and the diagonal when it was solved: what is left is -(the rows after it) x.
     if (sweeps == 1) {
-#pragma omp parallel for num_threads(rowThreads) schedule(static)
-      for (int i = 0; i < n; ++i) {
+      forRows(shared, n, [&](int i) {
         Float4 sum = Float4{};
         for (int k = level.laterStart[i]; k < level.offStart[i + 1]; ++k) sum -= times(off + 3 * k, x[level.offColumn[k]]);
         r[i] = sum;
-      }
+      });
     } else {
-#pragma omp parallel for num_threads(rowThreads) schedule(static)
-      for (int i = 0; i < n; ++i) {
+      forRows(shared, n, [&](int i) {
         Float4 sum = b[i] - times(level.diagonal.data() + 3 * i, x[i]);
         for (int k = level.offStart[i]; k < level.offStart[i + 1]; ++k) sum -= times(off + 3 * k, x[level.offColumn[k]]);
         r[i] = sum;
-      }
+      });
     }
-    // Restriction: the coarse right-hand side P^T r, gathered by coarse rows.
-    const int coarseThreads = threadsFor(coarse.rows, threads);
-#pragma omp parallel for num_threads(coarseThreads) schedule(static)
-    for (int J = 0; J < coarse.rows; ++J) {
+    // Restriction: the coarse right-hand side P^T r, gathered by coarse rows (a few on one thread).
+    auto restrictRow = [&](int J) {
       Float4 sum = Float4{};
       for (int k = level.transposeStart[J]; k < level.transposeStart[J + 1]; ++k)
         sum += times(level.pt.data() + 3 * k, r[level.transposeColumn[k]]);
       coarse.b[J] = sum;
+    };
+    if (shared && coarse.rows < kCycleRowsPerThread) {
+      once(shared, [&] { forRows(false, coarse.rows, restrictRow); });
+    } else {
+      forRows(shared, coarse.rows, restrictRow);
     }
-    cycle(hierarchy, l + 1, sweeps, threads);
+    cycle(hierarchy, l + 1, sweeps, shared);
     // Prolongation: x += P e.
     const BlockSparseMatrix& P = hierarchy.level(l).P;
     const Float4* e = coarse.x.data();
-#pragma omp parallel for num_threads(rowThreads) schedule(static)
-    for (int i = 0; i < n; ++i) {
+    forRows(shared, n, [&](int i) {
       Float4 sum = Float4{};
       for (int k = P.rowStart[i]; k < P.rowStart[i + 1]; ++k) sum += times(level.p.data() + 3 * k, e[P.column[k]]);
       x[i] += sum;
-    }
+    });
   }
-  for (int sweep = 0; sweep < sweeps; ++sweep) sweepBackward(level, threads, solveRow);
+  for (int sweep = 0; sweep < sweeps; ++sweep) sweepBackward(level, shared, solveRow);
 }
 
-void AmgFloatCycle::applyInTeam(const AmgHierarchy& hierarchy, const Eigen::VectorXd& inR, Eigen::VectorXd& outZ,
-                                int sweeps) {
-  Level& finest = levels_[0];
-#pragma omp single
-  outZ.resize(inR.size());
-#pragma omp for schedule(static)
-  for (int i = 0; i < finest.rows; ++i)
-    finest.b[i] = Float4{static_cast<float>(inR[3 * i]), static_cast<float>(inR[3 * i + 1]),
-                         static_cast<float>(inR[3 * i + 2]), 0.0f};
-  cycleInTeam(hierarchy, 0, std::max(sweeps, 1));
-#pragma omp for schedule(static)
-  for (int i = 0; i < finest.rows; ++i)
-    for (int c = 0; c < 3; ++c) outZ[3 * i + c] = finest.x[i][c];
-}
-
-void AmgFloatCycle::cycleInTeam(const AmgHierarchy& hierarchy, int l, int sweeps) {
-  Level& level = levels_[l];
-  const int n = level.rows;
-  if (l + 1 == hierarchy.levelCount() || n < kCycleRowsPerThread) {
-    // Too small to share (as apply's threadsFor): this level and those below on one thread.
-#pragma omp single
-    cycle(hierarchy, l, sweeps, 1);
+template <typename Row>
+void AmgFloatCycle::sweepForward(const Level& level, bool shared, const Row& row) {
+  if (level.split == 0) {
+    once(shared, [&] {
+      for (int i = 0; i < level.rows; ++i) row(i);
+    });
     return;
   }
-  // The passes of cycle(), row for row.
-  const Float4* off = level.off.data();
-  const Float4* inverseDiagonal = level.inverseDiagonal.data();
-  Float4* x = level.x.data();
-  const Float4* b = level.b.data();
-  sweepForwardInTeam(level, [&](int i) {
-    Float4 sum = b[i];
-    for (int k = level.offStart[i]; k < level.laterStart[i]; ++k) sum -= times(off + 3 * k, x[level.offColumn[k]]);
-    x[i] = times(inverseDiagonal + 3 * i, sum);
+  forRows(shared, 2, [&](int group) {
+    if (group == 0) {
+      for (int i = 0; i < level.split; ++i) row(i);
+    } else {
+      for (int i : level.secondGroup) row(i);
+    }
   });
-  auto solveRow = [&](int i) {
-    Float4 sum = b[i];
-    for (int k = level.offStart[i]; k < level.offStart[i + 1]; ++k) sum -= times(off + 3 * k, x[level.offColumn[k]]);
-    x[i] = times(inverseDiagonal + 3 * i, sum);
-  };
-  for (int sweep = 1; sweep < sweeps; ++sweep) sweepForwardInTeam(level, solveRow);
-  Level& coarse = levels_[l + 1];
-  Float4* r = level.r.data();
-  if (sweeps == 1) {
-#pragma omp for schedule(static)
-    for (int i = 0; i < n; ++i) {
-      Float4 sum = Float4{};
-      for (int k = level.laterStart[i]; k < level.offStart[i + 1]; ++k) sum -= times(off + 3 * k, x[level.offColumn[k]]);
-      r[i] = sum;
-    }
-  } else {
-#pragma omp for schedule(static)
-    for (int i = 0; i < n; ++i) {
-      Float4 sum = b[i] - times(level.diagonal.data() + 3 * i, x[i]);
-      for (int k = level.offStart[i]; k < level.offStart[i + 1]; ++k) sum -= times(off + 3 * k, x[level.offColumn[k]]);
-      r[i] = sum;
-    }
-  }
-  auto restrictRow = [&](int J) {
-    Float4 sum = Float4{};
-    for (int k = level.transposeStart[J]; k < level.transposeStart[J + 1]; ++k)
-      sum += times(level.pt.data() + 3 * k, r[level.transposeColumn[k]]);
-    coarse.b[J] = sum;
-  };
-  if (coarse.rows >= kCycleRowsPerThread) {
-#pragma omp for schedule(static)
-    for (int J = 0; J < coarse.rows; ++J) restrictRow(J);
-  } else {
-#pragma omp single
-    for (int J = 0; J < coarse.rows; ++J) restrictRow(J);
-  }
-  cycleInTeam(hierarchy, l + 1, sweeps);
-  const BlockSparseMatrix& P = hierarchy.level(l).P;
-  const Float4* e = coarse.x.data();
-#pragma omp for schedule(static)
-  for (int i = 0; i < n; ++i) {
-    Float4 sum = Float4{};
-    for (int k = P.rowStart[i]; k < P.rowStart[i + 1]; ++k) sum += times(level.p.data() + 3 * k, e[P.column[k]]);
-    x[i] += sum;
-  }
-  for (int sweep = 0; sweep < sweeps; ++sweep) sweepBackwardInTeam(level, solveRow);
+  once(shared, [&] {
+    for (int i : level.interfaceRows) row(i);
+  });
 }
 
 template <typename Row>
-void AmgFloatCycle::sweepForwardInTeam(const Level& level, const Row& row) {
+void AmgFloatCycle::sweepBackward(const Level& level, bool shared, const Row& row) {
   if (level.split == 0) {
-#pragma omp single
-    for (int i = 0; i < level.rows; ++i) row(i);
+    once(shared, [&] {
+      for (int i = level.rows - 1; i >= 0; --i) row(i);
+    });
     return;
   }
-#pragma omp for schedule(static, 1)
-  for (int group = 0; group < 2; ++group) {
-    if (group == 0) {
-      for (int i = 0; i < level.split; ++i) row(i);
-    } else {
-      for (int i : level.secondGroup) row(i);
-    }
-  }
-#pragma omp single
-  for (int i : level.interfaceRows) row(i);
-}
-
-template <typename Row>
-void AmgFloatCycle::sweepBackwardInTeam(const Level& level, const Row& row) {
-  if (level.split == 0) {
-#pragma omp single
-    for (int i = level.rows - 1; i >= 0; --i) row(i);
-    return;
-  }
-#pragma omp single
-  for (auto i = level.interfaceRows.rbegin(); i != level.interfaceRows.rend(); ++i) row(*i);
-#pragma omp for schedule(static, 1)
-  for (int group = 0; group < 2; ++group) {
+  once(shared, [&] {
+    for (auto i = level.interfaceRows.rbegin(); i != level.interfaceRows.rend(); ++i) row(*i);
+  });
+  forRows(shared, 2, [&](int group) {
     if (group == 0) {
       for (int i = level.split - 1; i >= 0; --i) row(i);
     } else {
       for (auto i = level.secondGroup.rbegin(); i != level.secondGroup.rend(); ++i) row(*i);
     }
-  }
-}
-
-template <typename Row>
-void AmgFloatCycle::sweepForward(const Level& level, int threads, const Row& row) {
-  if (level.split == 0) {
-    for (int i = 0; i < level.rows; ++i) row(i);
-    return;
-  }
-#pragma omp parallel for num_threads(std::clamp(threads, 1, 2)) schedule(static, 1)
-  for (int group = 0; group < 2; ++group) {
-    if (group == 0) {
-      for (int i = 0; i < level.split; ++i) row(i);
-    } else {
-      for (int i : level.secondGroup) row(i);
-    }
-  }
-  for (int i : level.interfaceRows) row(i);
-}
-
-template <typename Row>
-void AmgFloatCycle::sweepBackward(const Level& level, int threads, const Row& row) {
-  if (level.split == 0) {
-    for (int i = level.rows - 1; i >= 0; --i) row(i);
-    return;
-  }
-  for (auto i = level.interfaceRows.rbegin(); i != level.interfaceRows.rend(); ++i) row(*i);
-#pragma omp parallel for num_threads(std::clamp(threads, 1, 2)) schedule(static, 1)
-  for (int group = 0; group < 2; ++group) {
-    if (group == 0) {
-      for (int i = level.split - 1; i >= 0; --i) row(i);
-    } else {
-      for (auto i = level.secondGroup.rbegin(); i != level.secondGroup.rend(); ++i) row(*i);
-    }
-  }
+  });
 }
 
 }  // namespace weft

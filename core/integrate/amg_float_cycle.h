@@ -50,12 +50,12 @@ class AmgFloatCycle {
   // outZ = one V-cycle applied to inR (both double): `sweeps` block Gauss-Seidel sweeps forward
   // before each coarse correction and backward after it.
   void apply(const AmgHierarchy& hierarchy, const Eigen::VectorXd& inR, Eigen::VectorXd& outZ, int sweeps, int threads);
-  // The same cycle, called by every thread of an enclosing parallel region (or by one thread
-  // outside any): its row-wise passes and the two groups of a split sweep are shared among them,
-  // a level too small to share (and the levels below it) runs on one of them, and each pass ends
-  // with a barrier, so it returns on every thread with outZ complete. The same operations on
-  // every row as apply, so the same bits; barriers instead of a parallel region per pass (on the
-  // 2-core machine a fork and join costs ~3 µs, a barrier ~1.5 µs, a pass at 64^2 10-20 µs).
+  // The same cycle, called by every thread of an enclosing parallel region (apply opens one of
+  // `threads` for it): its row-wise passes and the two groups of a split sweep are shared among
+  // them, a level too small to share (and the levels below it) runs on one of them, and each pass
+  // ends with a barrier, so it returns on every thread with outZ complete. Barriers instead of a
+  // parallel region per pass (on the 2-core machine a fork and join costs ~3 µs, a barrier
+  // ~1.5 µs, a pass at 64^2 10-20 µs).
   void applyInTeam(const AmgHierarchy& hierarchy, const Eigen::VectorXd& inR, Eigen::VectorXd& outZ, int sweeps);
   bool built() const { return !levels_.empty(); }
 
@@ -86,18 +86,24 @@ class AmgFloatCycle {
     std::vector<Float4> b, x, r;
   };
 
-  void cycle(const AmgHierarchy& hierarchy, int l, int sweeps, int threads);
-  void cycleInTeam(const AmgHierarchy& hierarchy, int l, int sweeps);
-  template <typename Row>
-  static void sweepForwardInTeam(const Level& level, const Row& row);
-  template <typename Row>
-  static void sweepBackwardInTeam(const Level& level, const Row& row);
+  // apply's body: every pass shared by the calling team, or all of it on the calling thread.
+  void applyWith(const AmgHierarchy& hierarchy, const Eigen::VectorXd& inR, Eigen::VectorXd& outZ, int sweeps,
+                 bool shared);
+  // One V-cycle from level l down. `shared`: called by every thread of a team, which shares its
+  // row-wise passes and the two groups of a split sweep (omp for; a level too small to share, and
+  // those below it, on one thread: omp single), each pass ending in a barrier; otherwise plain
+  // loops on the calling thread. The same operations on every row either way, so the same bits.
+  void cycle(const AmgHierarchy& hierarchy, int l, int sweeps, bool shared);
   // `row(i)` for every row of the level in its sweep order (forward) or in reverse (backward), the
-  // first two groups on two threads when there are.
+  // first two groups on two threads of the team when there are.
   template <typename Row>
-  static void sweepForward(const Level& level, int threads, const Row& row);
+  static void sweepForward(const Level& level, bool shared, const Row& row);
   template <typename Row>
-  static void sweepBackward(const Level& level, int threads, const Row& row);
+  static void sweepBackward(const Level& level, bool shared, const Row& row);
+  template <typename Body>
+  static void forRows(bool shared, int rows, const Body& body);
+  template <typename Body>
+  static void once(bool shared, const Body& body);
 
   std::vector<Level> levels_;
   Eigen::VectorXd coarsestRhs_, coarsestSolution_;
