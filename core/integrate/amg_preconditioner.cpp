@@ -297,9 +297,8 @@ void AmgPreconditioner::apply(const Eigen::VectorXd& inR, Eigen::VectorXd& outZ)
 }
 
 void AmgPreconditioner::applyInTeam(const Eigen::VectorXd& inR, Eigen::VectorXd& outZ) {
-  if (!appliesInTeam()) {
-#pragma omp single
-    apply(inR, outZ);
+  if (!settings_.singlePrecisionCycle || hierarchy_.levelCount() == 0) {
+    Preconditioner::applyInTeam(inR, outZ);
     return;
   }
   floatCycle_.applyInTeam(hierarchy_, inR, outZ, settings_.smoothingSweeps);

@@ -58,8 +58,7 @@ class AmgPreconditioner final : public Preconditioner {
 
   void prepare(const SystemMatrix& A) override;
   void apply(const Eigen::VectorXd& inR, Eigen::VectorXd& outZ) override;
-  // The float cycle in a team (AmgFloatCycle::applyInTeam), once prepared.
-  bool appliesInTeam() const override { return settings_.singlePrecisionCycle && hierarchy_.levelCount() > 0; }
+  // The float cycle's passes shared by the team (AmgFloatCycle::applyInTeam), once prepared.
   void applyInTeam(const Eigen::VectorXd& inR, Eigen::VectorXd& outZ) override;
   // The row-wise parts (products, residuals, prolongator smoothing, A P) split their rows over the
   // threads in fixed ranges; the Gauss-Seidel sweeps and the scatters (restriction, P^T (A P)) stay

@@ -194,7 +194,6 @@ int PreconditionedConjugateGradient::iterateInTeam(const SystemMatrix& A, double
   partial_.assign(2 * static_cast<std::size_t>(chunks), 0.0);
   product_.resize(n);
   double* partial = partial_.data();
-  const bool team = preconditioner.appliesInTeam();
   int iterations = 0;
 #pragma omp parallel num_threads(vectorParts(n, threads_))
   {
@@ -234,12 +233,7 @@ int PreconditionedConjugateGradient::iterateInTeam(const SystemMatrix& A, double
       bool restart = false;
 #pragma omp single copyprivate(restart)
       restart = preconditioner.refreshIfStale(A, done);
-      if (team) {
-        preconditioner.applyInTeam(residual_, preconditioned_);
-      } else {
-#pragma omp single
-        preconditioner.apply(residual_, preconditioned_);
-      }
+      preconditioner.applyInTeam(residual_, preconditioned_);
 #pragma omp for schedule(static)
       for (int c = 0; c < chunks; ++c) {
         const Eigen::Index first = c * kDotChunk, size = std::min(kDotChunk, n - first);

@@ -28,9 +28,9 @@ class PreconditionedConjugateGradient {
 
   LinearSolveResult solve(const SystemMatrix& A, const Eigen::VectorXd& b, double rhsNormFloor,
                           Preconditioner& preconditioner, Eigen::VectorXd& x);
-  // Threads of the products with A: each thread multiplies a fixed range of rows with the same code
-  // as one thread does, so the result is the same bits for any count. The vector updates and dot
-  // products stay on one thread (a parallel sum would change its rounding with the thread count).
+  // Threads of the solve: the products with A by fixed ranges of rows, the vector updates by fixed
+  // ranges of entries, the dot products as partial sums over fixed chunks added in chunk order
+  // (preconditioned_cg.cpp), so the result is the same bits for any count.
   void setThreads(int threads) { threads_ = threads; }
 
   // outY = A x as the solve computes it: A's columns read as 3x3 blocks when its pattern is made

@@ -14,12 +14,10 @@ class Preconditioner {
   virtual void prepare(const SystemMatrix& A) = 0;
   // outZ = M^-1 inR.
   virtual void apply(const Eigen::VectorXd& inR, Eigen::VectorXd& outZ) = 0;
-  // Whether applyInTeam shares its work among the threads of an enclosing parallel region: every
-  // thread of the region calls it with the same arguments and it returns, on every thread, once
-  // outZ is complete (a barrier). The CG then runs a whole solve in one parallel region; otherwise
-  // it calls apply on one thread of it.
-  virtual bool appliesInTeam() const { return false; }
-  virtual void applyInTeam(const Eigen::VectorXd& inR, Eigen::VectorXd& outZ) { apply(inR, outZ); }
+  // apply, called by every thread of an enclosing parallel region with the same arguments (the
+  // CG's with several threads); it returns on every thread once outZ is complete. By default one
+  // thread of the team applies M and the others wait; a preconditioner may share the work.
+  virtual void applyInTeam(const Eigen::VectorXd& inR, Eigen::VectorXd& outZ);  // preconditioner.cpp
   // Called after every iteration of a solve that has not converged yet. A preconditioner that has
   // gone stale may rebuild M from A here and return true; the CG then restarts its search
   // direction (directions conjugate under the old M are not under the new one).

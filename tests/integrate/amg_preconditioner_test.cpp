@@ -12,6 +12,7 @@
 #include "forces/elastic_forces.h"
 #include "integrate/amg_preconditioner.h"
 #include "integrate/block_jacobi_preconditioner.h"
+#include "integrate/lagged_cholesky_preconditioner.h"
 #include "integrate/linear_solver.h"
 #include "integrate/preconditioned_cg.h"
 #include "integrate/strong_coupling_approximation.h"
@@ -361,6 +362,34 @@ TEST(AmgPreconditioner, ASplitSweepIsASymmetricGaussSeidelAsGoodAsTheRowOrder) {
   Eigen::VectorXd zPlain;
   plain.apply(system.b, zPlain);
   EXPECT_FALSE(zPlain == answers[0]);
+}
+
+TEST(PreconditionedCg, APreconditionerThatDoesNotShareItsApplyGivesTheSameBitsInTheTeam) {
+  // With two threads the CG runs its iterations in one parallel region; the lagged Cholesky and
+  // block Jacobi are applied there by one thread of it (Preconditioner::applyInTeam's default),
+  // the answer the same bits as one thread's call by call.
+  const ClothSystem system = movingSheetSystem(64, 3);
+  auto solveWith = [&](Preconditioner& preconditioner, int threads, int& iterations) {
+    PreconditionedConjugateGradient cg(1e-8, 300);
+    cg.setThreads(threads);
+    preconditioner.setThreads(threads);
+    Eigen::VectorXd x = Eigen::VectorXd::Zero(system.b.size());
+    iterations = cg.solve(system.A, system.b, 0.0, preconditioner, x).iterations;
+    return x;
+  };
+  for (int kind = 0; kind < 2; ++kind) {
+    std::vector<Eigen::VectorXd> answers;
+    std::vector<int> iterations(2);
+    for (int threads : {1, 2}) {
+      LaggedCholeskyPreconditioner cholesky;
+      BlockJacobiPreconditioner jacobi;
+      Preconditioner& preconditioner = kind == 0 ? static_cast<Preconditioner&>(cholesky) : jacobi;
+      answers.push_back(solveWith(preconditioner, threads, iterations[threads - 1]));
+    }
+    EXPECT_GT(iterations[0], 1) << kind;
+    EXPECT_EQ(iterations[0], iterations[1]) << kind;
+    EXPECT_TRUE(answers[0] == answers[1]) << kind << ": largest difference " << (answers[0] - answers[1]).cwiseAbs().maxCoeff();
+  }
 }
 
 TEST(PreconditionedCg, BlockProductIsTheSameBitsAsEigensOnAnyThreadCount) {
