@@ -86,19 +86,29 @@ int vectorParts(Eigen::Index n, int threads) {
   return static_cast<int>(std::clamp<Eigen::Index>(n / kMinimumColumnsPerThread, 1, std::max(threads, 1)));
 }
 
+int chunkCount(Eigen::Index n) { return static_cast<int>((n + kDotChunk - 1) / kDotChunk); }
+
+// Chunk c's partial dot.
+double chunkDot(const Eigen::VectorXd& a, const Eigen::VectorXd& b, int c) {
+  const Eigen::Index begin = c * kDotChunk, length = std::min(kDotChunk, a.size() - begin);
+  return a.segment(begin, length).dot(b.segment(begin, length));
+}
+
+// The partials added in chunk order.
+double sumOfChunks(const double* partial, int chunks) {
+  double sum = 0.0;
+  for (int c = 0; c < chunks; ++c) sum += partial[c];
+  return sum;
+}
+
 double chunkedDot(const Eigen::VectorXd& a, const Eigen::VectorXd& b, int threads, std::vector<double>& partial) {
   const Eigen::Index n = a.size();
   if (n <= kDotChunk) return a.dot(b);
-  const int chunks = static_cast<int>((n + kDotChunk - 1) / kDotChunk);
+  const int chunks = chunkCount(n);
   partial.resize(chunks);
 #pragma omp parallel for num_threads(std::min(vectorParts(n, threads), chunks)) schedule(static)
-  for (int c = 0; c < chunks; ++c) {
-    const Eigen::Index begin = c * kDotChunk, length = std::min(kDotChunk, n - begin);
-    partial[c] = a.segment(begin, length).dot(b.segment(begin, length));
-  }
-  double sum = 0.0;
-  for (double p : partial) sum += p;
-  return sum;
+  for (int c = 0; c < chunks; ++c) partial[c] = chunkDot(a, b, c);
+  return sumOfChunks(partial.data(), chunks);
 }
 
 double chunkedNorm(const Eigen::VectorXd& a, int threads, std::vector<double>& partial) {
@@ -190,10 +200,9 @@ int PreconditionedConjugateGradient::iterateInTeam(const SystemMatrix& A, double
   // round 9); barriers cost half of that.
   const Eigen::Index n = x.size();
   const int blocks = static_cast<int>(n / 3);
-  const int chunks = static_cast<int>((n + kDotChunk - 1) / kDotChunk);
+  const int chunks = chunkCount(n);
   partial_.assign(2 * static_cast<std::size_t>(chunks), 0.0);
   product_.resize(n);
-  double* partial = partial_.data();
   int iterations = 0;
 #pragma omp parallel num_threads(vectorParts(n, threads_))
   {
@@ -201,45 +210,33 @@ int PreconditionedConjugateGradient::iterateInTeam(const SystemMatrix& A, double
     const int firstBlock = static_cast<int>(static_cast<long>(blocks) * part / parts);
     const int endBlock = static_cast<int>(static_cast<long>(blocks) * (part + 1) / parts);
     const Eigen::Index begin = n * part / parts, length = n * (part + 1) / parts - begin;
-    auto chunkedSum = [&](const double* sums) {
-      double sum = 0.0;
-      for (int c = 0; c < chunks; ++c) sum += sums[c];
-      return sum;
+    // a.b as chunkedDot sums it, the chunks shared by the team, into partials at `slot` (two sets,
+    // so that one dot's partials are not overwritten while a thread still sums them).
+    auto teamDot = [&](const Eigen::VectorXd& a, const Eigen::VectorXd& b, int slot) {
+      double* partial = partial_.data() + static_cast<std::size_t>(slot) * chunks;
+#pragma omp for schedule(static)
+      for (int c = 0; c < chunks; ++c) partial[c] = chunkDot(a, b, c);
+      return sumOfChunks(partial, chunks);
     };
     double ownRz = rz, norm = residualNorm;
     int done = 0;
     while (done < maxIterations_) {
       blockColumnsProduct(A.matrix(), direction_, product_, firstBlock, endBlock);
 #pragma omp barrier
-#pragma omp for schedule(static)
-      for (int c = 0; c < chunks; ++c) {
-        const Eigen::Index first = c * kDotChunk, size = std::min(kDotChunk, n - first);
-        partial[c] = direction_.segment(first, size).dot(product_.segment(first, size));
-      }
-      const double curvature = chunkedSum(partial);
+      const double curvature = teamDot(direction_, product_, 0);
       if (!(curvature > 0.0)) break;  // A (or M) not positive definite along the direction, or NaN
       const double alpha = ownRz / curvature;
       x.segment(begin, length) += alpha * direction_.segment(begin, length);
       residual_.segment(begin, length) += -alpha * product_.segment(begin, length);
 #pragma omp barrier
-#pragma omp for schedule(static)
-      for (int c = 0; c < chunks; ++c) {
-        const Eigen::Index first = c * kDotChunk, size = std::min(kDotChunk, n - first);
-        partial[chunks + c] = residual_.segment(first, size).dot(residual_.segment(first, size));
-      }
-      norm = std::sqrt(chunkedSum(partial + chunks));
+      norm = std::sqrt(teamDot(residual_, residual_, 1));
       ++done;
       if (norm <= threshold) break;
       bool restart = false;
 #pragma omp single copyprivate(restart)
       restart = preconditioner.refreshIfStale(A, done);
       preconditioner.applyInTeam(residual_, preconditioned_);
-#pragma omp for schedule(static)
-      for (int c = 0; c < chunks; ++c) {
-        const Eigen::Index first = c * kDotChunk, size = std::min(kDotChunk, n - first);
-        partial[c] = residual_.segment(first, size).dot(preconditioned_.segment(first, size));
-      }
-      const double rzNext = chunkedSum(partial);
+      const double rzNext = teamDot(residual_, preconditioned_, 0);
       if (restart) {
         direction_.segment(begin, length) = preconditioned_.segment(begin, length);
       } else {
