@@ -111,8 +111,16 @@ std::size_t NonlocalStress::heapBytes() const {
   return weft::heapBytes(centroid_) + weft::heapBytes(area_) + weft::heapBytes(lip_) + weft::heapBytes(across_) + weft::heapBytes(neighbours_) +
          weft::heapBytes(scale_) + weft::heapBytes(stamp_) + weft::heapBytes(region_) + weft::heapBytes(hot_) + weft::heapBytes(pending_) + weft::heapBytes(pendingPlaces_) + weft::heapBytes(pendingMark_) +
          weft::heapBytes(needed_) + weft::heapBytes(vertexNeeded_) + weft::heapBytes(cellOf_) +
-         weft::heapBytes(cellWeight_) + weft::heapBytes(cellMiddle_) + weft::heapBytes(cellReader_);
+         weft::heapBytes(cellWeight_) + weft::heapBytes(cellMiddle_) + weft::heapBytes(cellReader_) +
+         weft::heapBytes(readsFrom_) + weft::heapBytes(place_) +
+         weft::heapBytes(changedPlaces_) + weft::heapBytes(packed_);
 }
+
+std::size_t StressLattice::heapBytes() const {
+  return weft::heapBytes(nodes_);
+}
+
+std::size_t BoxCounts::heapBytes() const { return weft::heapBytes(summed_); }
 
 std::size_t TearSearch::heapBytes() const {
   return weft::heapBytes(triangleAt_) + weft::heapBytes(rowStart_) + weft::heapBytes(around_) +

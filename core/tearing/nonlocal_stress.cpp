@@ -9,15 +9,22 @@ namespace weft {
 namespace {
 
 // A triangle whose neighbourhood (and so its average) depends on a changed one may lie a little
-// beyond the radius from it when the walk to it bends around a crack's end: the patch looks this
+// beyond the reach from it when the walk to it bends around a crack's end: the patch looks this
 // much further.
 constexpr double kPatchReach = 1.25;
 
+// A triangle reads the lattice when its walk's weights sum to the lattice's within this (relative):
+// the walk then found every triangle of any weight the lattice reads.
+constexpr double kSameWeight = 1e-9;
+
+// The lattice may have at most this many nodes per triangle (and 2^20 whatever the count): a cloth
+// whose material extent is huge beside the averaging length reads lists throughout instead.
+constexpr std::size_t kNodesPerTriangle = 8;
+
 // A neighbourhood holds at most this many triangles. The disc holds (radius / edge)^2 triangles or
 // so, which a mesh much finer than the radius makes unbounded: the default 6.5 cm over a 1 m sheet
-// holds about 100 at 64 x 64 but 1,700 at 256 x 256 and 26,000 at 1024 x 1024 (440 GB of lists).
-// Past the cap the list is thinned (see thin): the cost and memory of an average stay
-// bounded while it still reads the whole disc.
+// holds about 100 at 64 x 64 but 1,700 at 256 x 256. Past the cap the list is thinned (see thin):
+// the cost and memory of an average stay bounded while it still reads the whole disc.
 constexpr std::size_t kMaxNeighbours = 256;
 // The nearest triangles of a thinned list, kept one by one: a crack tip's singular stress is read
 // at its own resolution, not spread over a group.
@@ -55,10 +62,14 @@ void NonlocalStress::updateCentroids(const ClothMesh& mesh, const std::vector<in
   neighbours_.resize(count);
   scale_.resize(count, 0.0);
   across_.resize(count, {kNone, kNone, kNone});
+  readsFrom_.resize(count, ReadsFrom::Unchecked);
+  place_.resize(count);
   for (int t : triangles) {
     const Triangle& tri = mesh.tris[t];
     centroid_[t] = (tri.rest[0] + tri.rest[1] + tri.rest[2]) / 3.0;
     area_[t] = std::abs(restArea(tri));
+    place_[t] = kernel_.place(centroid_[t]);
+    for (int k = 0; k < 3; ++k) largestSize_ = std::max(largestSize_, (tri.rest[(k + 1) % 3] - tri.rest[k]).norm());
     lip_[t] = 0;
     for (int e : tri.edge) lip_[t] = lip_[t] || (mesh.edges[e].torn && mesh.edges[e].isBoundary());
   }
@@ -72,37 +83,27 @@ void NonlocalStress::updateAcross(const ClothMesh& mesh, int t) {
   }
 }
 
-void NonlocalStress::gather(const ClothMesh& mesh, int t, double reach) {
+template <typename Within>
+void NonlocalStress::gather(int t, const Within& within) {
   ++currentStamp_;
   region_.clear();
   region_.push_back(t);
   stamp_[t] = currentStamp_;
-  const Vec2 centre = centroid_[t];
-  const double reach2 = reach * reach;
-  walkOut(across_, region_, stamp_, currentStamp_,
-          [&](int other) { return (centroid_[other] - centre).squaredNorm() <= reach2; });
+  walkOut(across_, region_, stamp_, currentStamp_, within);
 }
 
-void NonlocalStress::gatherAround(const ClothMesh& mesh, const std::vector<int>& seeds, double reach) {
-  // One walk from all the seeds at once: a tear's changed triangles lie side by side, so walking
-  // from each in turn went over the same disc once per seed (most of a tearing step's patch).
-  // A triangle joins when it is within reach of any seed and touches one that joined: every
-  // seed's own gather is inside, so the patch rebuilds at least what it did seed by seed (a
-  // neighbourhood rebuilt that did not need it comes out as it was).
-  ++currentStamp_;
-  region_.clear();
-  for (int t : seeds) {
-    if (stamp_[t] == currentStamp_) continue;
-    stamp_[t] = currentStamp_;
-    region_.push_back(t);
-  }
-  const double reach2 = reach * reach;
-  walkOut(across_, region_, stamp_, currentStamp_, [&](int other) {
-    for (int t : seeds) {
-      if ((centroid_[other] - centroid_[t]).squaredNorm() <= reach2) return true;
-    }
-    return false;
+double NonlocalStress::walkedKernelWeight(int t) {
+  const Vec2 centre = centroid_[t];
+  const double reach = kernel_.reach();
+  gather(t, [&](int other) {
+    const Vec2 offset = (centroid_[other] - centre).cwiseAbs();
+    return offset.x() < reach && offset.y() < reach;
   });
+  double weights = 0.0;
+  for (int u : region_) {
+    if (!lip_[u]) weights += area_[u] * kernel_.weight(centre, centroid_[u]);
+  }
+  return weights;
 }
 
 void NonlocalStress::thin(int t, std::vector<Neighbour>& list) {
@@ -154,32 +155,34 @@ void NonlocalStress::thin(int t, std::vector<Neighbour>& list) {
   }
   std::vector<Neighbour> thinned(list.begin(), list.begin() + kExactNeighbours);
   for (int cell = 0; cell < kCells; ++cell) {
-    if (cellReader_[cell] != kNone) thinned.push_back({cellReader_[cell], static_cast<float>(cellWeight_[cell])});
+    if (cellReader_[cell] != kNone) thinned.push_back({cellReader_[cell], cellWeight_[cell]});
   }
   list = std::move(thinned);  // a list of its own length: the cap is about memory
 }
 
-void NonlocalStress::buildNeighbours(const ClothMesh& mesh, int t) {
-  gather(mesh, t, radius_);
+void NonlocalStress::buildNeighbours(int t) {
+  const Vec2 centre = centroid_[t];
+  const double radius2 = radius_ * radius_;
+  gather(t, [&](int other) { return (centroid_[other] - centre).squaredNorm() <= radius2; });
   std::vector<Neighbour>& list = neighbours_[t];
   list.clear();
   double weights = 0.0;
-  const double inverseRadius2 = 1.0 / (radius_ * radius_);
+  const double inverseRadius2 = 1.0 / radius2;
   for (int u : region_) {
     if (lip_[u]) continue;
-    const double d2 = (centroid_[u] - centroid_[t]).squaredNorm() * inverseRadius2;
+    const double d2 = (centroid_[u] - centre).squaredNorm() * inverseRadius2;
     const double bell = (1.0 - d2) * (1.0 - d2);
     const double w = area_[u] * bell;
     if (!(w > 0.0)) continue;  // adds nothing to the average: the list is what it reads
-    list.push_back({u, static_cast<float>(w)});
+    list.push_back({u, w});
     weights += w;
   }
   if (list.size() > kMaxNeighbours) thin(t, list);
-  // Stored as shares of the sum, then the sum of the rounded shares taken in double: the average
-  // is an exact weighted mean of its list (a uniform stress is itself), its weights rounded.
+  // Stored as shares of the sum, then the sum of the rounded shares: the average is an exact
+  // weighted mean of its list (a uniform stress is itself).
   double shares = 0.0;
   for (Neighbour& n : list) {
-    n.weight = static_cast<float>(static_cast<double>(n.weight) / weights);
+    n.weight /= weights;
     shares += n.weight;
   }
   scale_[t] = shares > 0.0 ? 1.0 / shares : 0.0;
@@ -194,7 +197,7 @@ void NonlocalStress::pack(const std::vector<Mat2>& local) {
 
 Mat2 NonlocalStress::averageAt(const std::vector<Mat2>& local, int t) const {
   if (scale_[t] == 0.0) return local[t];
-  // This loop is most of the stage's averaging, over about 100 neighbours a triangle. Four partial
+  // This loop is most of a list's averaging, over about 100 neighbours a triangle at 64^2. Four partial
   // sums per component, each over every fourth neighbour: one running sum would wait on each
   // addition before the next (four cycles a neighbour); four independent ones let the additions
   // overlap. The order is fixed, so a cached average still equals a fresh one. The sums are those
@@ -237,8 +240,11 @@ Mat2 NonlocalStress::averageAt(const std::vector<Mat2>& local, int t) const {
 
 void NonlocalStress::rebuild(const ClothMesh& mesh, double radius) {
   radius_ = radius;
+  kernel_ = StressKernel(radius);
+  largestSize_ = 0.0;
   pending_.clear();
   pendingPlaces_.clear();
+  changedPlaces_.clear();
   pendingMark_.assign(mesh.tris.size(), 0);
   centroid_.clear();
   area_.clear();
@@ -246,15 +252,98 @@ void NonlocalStress::rebuild(const ClothMesh& mesh, double radius) {
   neighbours_.clear();
   scale_.clear();
   across_.clear();
+  readsFrom_.clear();
   stamp_.assign(mesh.tris.size(), 0);
   currentStamp_ = 0;
   std::vector<int> all(mesh.tris.size());
   for (int t = 0; t < mesh.triangleCount(); ++t) all[t] = t;
   updateCentroids(mesh, all);
   for (int t = 0; t < mesh.triangleCount(); ++t) updateAcross(mesh, t);
-  for (int t = 0; t < mesh.triangleCount(); ++t) buildNeighbours(mesh, t);
   cachedTriangles_ = mesh.tris.size();
   built_ = true;
+}
+
+bool NonlocalStress::buildLattice(const std::vector<Mat2>& local, int threads, StressLattice& lattice) const {
+  const std::size_t count = centroid_.size();
+  if (count == 0) return false;
+  long lowI = place_[0].x.node, highI = lowI, lowJ = place_[0].y.node, highJ = lowJ;
+  for (const StressKernel::Place& place : place_) {
+    lowI = std::min(lowI, place.x.node);
+    highI = std::max(highI, place.x.node);
+    lowJ = std::min(lowJ, place.y.node);
+    highJ = std::max(highJ, place.y.node);
+  }
+  if (!lattice.reset(lowI, highI, lowJ, highJ, std::max<std::size_t>(std::size_t{1} << 20, kNodesPerTriangle * count))) {
+    return false;
+  }
+  for (std::size_t t = 0; t < count; ++t) {
+    if (!lip_[t]) lattice.splat(place_[t], area_[t], local[t], hot_[t]);
+  }
+  lattice.blur(threads);
+  return true;
+}
+
+void NonlocalStress::resolveReadings(const ClothMesh& mesh, const StressLattice* lattice) {
+  const int count = static_cast<int>(centroid_.size());
+  bool anyUnchecked = false;
+  for (int t = 0; t < count && !anyUnchecked; ++t) anyUnchecked = readsFrom_[t] == ReadsFrom::Unchecked;
+  if (!anyUnchecked && changedPlaces_.empty()) return;
+  // A triangle the walk could miss lies beyond a border from t, within the kernel's reach: a
+  // border triangle's centroid then lies within that reach plus a triangle's size. Near a crack's
+  // lips a triangle reads a list (the lattice would read across the crack); near the cloth's own
+  // border it reads the lattice if its walk finds all that the lattice reads.
+  std::vector<Vec2> lipCentroids, borderCentroids;
+  for (int t = 0; t < count; ++t) {
+    if (lip_[t]) {
+      lipCentroids.push_back(centroid_[t]);
+      continue;
+    }
+    for (int e : mesh.tris[t].edge) {
+      if (mesh.edges[e].isBoundary()) {
+        borderCentroids.push_back(centroid_[t]);
+        break;
+      }
+    }
+  }
+  const std::size_t maxCells = kNodesPerTriangle * centroid_.size() + 1024;
+  BoxCounts lips, borders, changed;
+  lips.build(lipCentroids, kernel_.spacing(), maxCells);
+  borders.build(borderCentroids, kernel_.spacing(), maxCells);
+  // Since the last call, tears changed the mesh around these places: a list reaches as far as
+  // its walk, which may bend round a crack's end (kPatchReach); a triangle that read the lattice
+  // needs a list if a crack's lip came within its reach (a tear adds borders only as lips).
+  changed.build(changedPlaces_, kernel_.spacing(), maxCells);
+  changedPlaces_.clear();
+  const double near = kernel_.reach() + largestSize_;
+  const double listReach = kPatchReach * radius_;
+  for (int t = 0; t < count; ++t) {
+    switch (readsFrom_[t]) {
+      case ReadsFrom::List:
+        if (changed.anyWithin(centroid_[t], listReach)) buildNeighbours(t);
+        continue;
+      case ReadsFrom::Lattice:
+        if (changed.anyWithin(centroid_[t], near) && lips.anyWithin(centroid_[t], near)) {
+          readsFrom_[t] = ReadsFrom::List;
+          buildNeighbours(t);
+        }
+        continue;
+      case ReadsFrom::Unchecked:
+        break;
+    }
+    bool fromLattice = lattice != nullptr && !lips.anyWithin(centroid_[t], near);
+    if (fromLattice && borders.anyWithin(centroid_[t], near)) {
+      const double read = lattice->read(place_[t]).weight;
+      fromLattice = std::abs(read - walkedKernelWeight(t)) <= kSameWeight * read;
+    }
+    if (fromLattice) {
+      readsFrom_[t] = ReadsFrom::Lattice;
+      std::vector<Neighbour>().swap(neighbours_[t]);
+      scale_[t] = 0.0;
+    } else {
+      readsFrom_[t] = ReadsFrom::List;
+      buildNeighbours(t);
+    }
+  }
 }
 
 void NonlocalStress::average(const ClothMesh& mesh, const std::vector<Mat2>& local, double radius, double threshold,
@@ -271,16 +360,26 @@ void NonlocalStress::average(const ClothMesh& mesh, const std::vector<Mat2>& loc
     anyHot = anyHot || hot_[t];
   }
   if (!anyHot) return;
-  // A triangle's average reads its list only, so unless the list holds a hot triangle the average
-  // stays below the threshold, as the local stress does. A lip is not in its own list: a hot one
-  // is averaged, or it would keep the stretch its average leaves out.
+  // The lattice is scratch of this call (the editor's timeline keeps a copy of this object per
+  // frame); resolveReadings reads it where a border is near.
+  StressLattice lattice;
+  const bool latticeUsable = buildLattice(local, threads, lattice);
+  resolveReadings(mesh, latticeUsable ? &lattice : nullptr);
+  // A triangle's average reads only what lies within its reach (its list, or the lattice's
+  // sources there), so unless that holds a hot triangle the average stays below the threshold, as
+  // the local stress does. A lip is not in its own list: a hot one is averaged, or it would keep
+  // the stretch its average leaves out.
   needed_.assign(count, 0);
 #pragma omp parallel for num_threads(std::max(1, threads)) schedule(static)
   for (int t = 0; t < count; ++t) {
     bool need = hot_[t];
-    for (const Neighbour& n : neighbours_[t]) {
-      if (need) break;
-      need = hot_[n.triangle];
+    if (readsFrom_[t] == ReadsFrom::Lattice) {
+      need = need || lattice.read(place_[t]).hot;
+    } else {
+      for (const Neighbour& n : neighbours_[t]) {
+        if (need) break;
+        need = hot_[n.triangle];
+      }
     }
     needed_[t] = need;
   }
@@ -294,8 +393,11 @@ void NonlocalStress::average(const ClothMesh& mesh, const std::vector<Mat2>& loc
 #pragma omp parallel for num_threads(std::max(1, threads)) schedule(static)
   for (int t = 0; t < count; ++t) {
     const Triangle& tri = mesh.tris[t];
-    if (needed_[t] || vertexNeeded_[tri.v[0]] || vertexNeeded_[tri.v[1]] || vertexNeeded_[tri.v[2]]) {
+    if (!(needed_[t] || vertexNeeded_[tri.v[0]] || vertexNeeded_[tri.v[1]] || vertexNeeded_[tri.v[2]])) continue;
+    if (readsFrom_[t] == ReadsFrom::List) {
       out[t] = averageAt(local, t);
+    } else if (const StressLattice::Reading reading = lattice.read(place_[t]); reading.weight > 0.0) {
+      out[t] = reading.weightedStress / reading.weight;
     }
   }
 }
@@ -309,7 +411,7 @@ std::vector<int> NonlocalStress::patch(const ClothMesh& mesh, const std::vector<
   std::sort(seeds.begin(), seeds.end());
   seeds.erase(std::unique(seeds.begin(), seeds.end()), seeds.end());
   // Where each changed triangle was before the step's first tear touched it (a triangle a tear
-  // added was nowhere): the neighbourhoods that read it there are rebuilt at the next average.
+  // added was nowhere): the triangles that read it there are checked again at the next average.
   pendingMark_.resize(mesh.tris.size(), 0);
   for (int t : seeds) {
     if (pendingMark_[t]) continue;
@@ -338,45 +440,23 @@ std::vector<int> NonlocalStress::patch(const ClothMesh& mesh, const std::vector<
   }
   for (int t : rejoined) updateAcross(mesh, t);
   // The changed triangles' stresses (and new ones) into the packed copy the averages read, and
-  // their own neighbourhoods and averages on the torn mesh.
+  // their own neighbourhoods and averages on the torn mesh: they lie on the crack, so they read
+  // lists (the lattice holds the step's stresses on the mesh before the tear).
   packed_.resize(local.size());
   for (int t : seeds) packed_[t] = packed(local[t]);
   for (int t : seeds) {
-    buildNeighbours(mesh, t);
+    buildNeighbours(t);
+    readsFrom_[t] = ReadsFrom::List;  // beside a lip
     out[t] = averageAt(local, t);
   }
   cachedTriangles_ = mesh.tris.size();
   return seeds;
 }
 
-void NonlocalStress::rebuildPending(const ClothMesh& mesh) {
+void NonlocalStress::rebuildPending(const ClothMesh&) {
   if (pending_.empty()) return;
-  std::vector<Vec2> places = pendingPlaces_;
-  for (int t : pending_) places.push_back(centroid_[t]);
-  // A neighbourhood is the walk from its triangle through triangles whose centroids lie within the
-  // radius, weighted by those centroids and their areas: it can change only if a changed triangle
-  // lies (or lay) within the radius of its triangle. The walk reaches further (round crack ends);
-  // the triangles it found beyond that keep their lists, bit for bit what a rebuild would give.
-  gatherAround(mesh, pending_, kPatchReach * radius_);
-  const double radius2 = radius_ * radius_;
-  Vec2 low = Vec2::Constant(std::numeric_limits<double>::infinity()), high = -low;
-  for (const Vec2& place : places) {
-    low = low.cwiseMin(place);
-    high = high.cwiseMax(place);
-  }
-  low.array() -= radius_;
-  high.array() += radius_;
-  std::vector<int> dirty;
-  for (int t : region_) {
-    const Vec2 centre = centroid_[t];
-    if ((centre.array() < low.array()).any() || (centre.array() > high.array()).any()) continue;  // far from all
-    if (std::any_of(places.begin(), places.end(),
-                    [&](const Vec2& place) { return (place - centre).squaredNorm() <= radius2; })) {
-      dirty.push_back(t);
-    }
-  }
-  std::sort(dirty.begin(), dirty.end());
-  for (int t : dirty) buildNeighbours(mesh, t);
+  changedPlaces_.insert(changedPlaces_.end(), pendingPlaces_.begin(), pendingPlaces_.end());
+  for (int t : pending_) changedPlaces_.push_back(centroid_[t]);
   for (int t : pending_) pendingMark_[t] = 0;
   pending_.clear();
   pendingPlaces_.clear();

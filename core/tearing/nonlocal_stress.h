@@ -9,11 +9,21 @@
 // refined, so first tears, crack speeds and side cracks do not depend on the element size; under
 // a uniform load the average is the load itself, so the direction a fabric tears along is unchanged.
 //
-// The average goes through the cloth, not across its cracks: a triangle's neighbourhood is found
-// by walking across shared edges from it, keeping the triangles whose centroid lies within the
-// radius (material space), so the lips of a crack do not average with each other except around
-// its tip. Weights: rest area times the bell (1 - (d/r)^2)^2 of the centroid distance d, which is
-// smooth, so a crack tip stepping by one element changes the average little.
+// Two kernels of the same second moment and nearly the same height at the centre, so that both
+// read a load as the same average to second order. Where the cloth lies all round a triangle:
+// the lattice's (stress_kernel.h), separable, reaching 1.05 r along each axis for an averaging
+// length r, read from a lattice (stress_lattice.h: every triangle's stress spread onto its nodes,
+// blurred, read back), whose cost per triangle does not grow with the reach. Where a crack's lips
+// lie within that reach (or the cloth's own border hides part of it, below): the bell
+// (1 - (d/r)^2)^2 over a disc of radius r, weighted by rest area, over a list of the triangles
+// found by walking across shared edges from the triangle, keeping those whose centroids lie within
+// the disc, so the average goes through the cloth, not across its cracks: the lips of a crack do
+// not average with each other except around its tip. The lattice would read across the crack. The
+// lists are what a crack tip reads, and the bell is round and centred on each triangle, while the
+// lattice's kernel widens a little between its nodes. Near the cloth's own border a triangle reads
+// the lattice when a walk within the lattice kernel's reach finds all that the lattice reads there
+// (a straight edge), a list otherwise (a notch, a hole). Both are smooth, so a crack tip stepping by
+// one element changes the average little.
 //
 // A lip's triangles (those with a torn border edge) are left out of every average. What they read
 // is the lip's own stretch, not a load the cloth carries: a crack's lips open during the step while
@@ -26,36 +36,36 @@
 //
 // Cost: an average is needed only where the cloth could tear. The average of tensile stresses is
 // no larger (in its largest principal value) than the largest of them, so only a triangle whose
-// neighbourhood holds one whose own stress could reach `threshold` is averaged; elsewhere the local
-// stress is kept (it is below the threshold too). The neighbourhoods and their weights depend on
-// the mesh alone, not on the stress, so they are kept from step to step (a walk per triangle cost
-// 14 ms a step at 64^2, ~100 triangles per disc) and rebuilt around a step's tears (`patch`): a step
-// costs one pass over the triangles plus, where the cloth is hot, one pass over their lists. A
-// list holds at most 256 triangles: on a mesh much finer than the radius the disc's outer part is
-// read at a coarser spacing (nonlocal_stress.cpp, kMaxNeighbours), so memory and time per triangle
-// stay bounded at any resolution (the walk that builds a list still visits the whole disc).
+// reach holds one whose own stress could reach `threshold` is averaged; elsewhere the local
+// stress is kept (it is below the threshold too). A step costs one pass over the triangles and
+// the lattice, plus, along the cracks, one pass over the lists there. The lists and whether a
+// triangle needs one depend on the mesh alone, so they are kept from step to step and redone
+// around a step's tears (`patch`). A list holds at most 256 triangles: on a mesh much finer than
+// the reach the outer part is read at a coarser spacing (nonlocal_stress.cpp, kMaxNeighbours), so
+// memory and time per triangle stay bounded at any resolution.
 #include <array>
 #include <cstddef>
 #include <vector>
 
 #include "mesh/cloth_mesh.h"
+#include "tearing/box_counts.h"
+#include "tearing/stress_kernel.h"
+#include "tearing/stress_lattice.h"
 #include "util/types.h"
 
 namespace weft {
 
 class NonlocalStress {
  public:
-  // One triangle of a neighbourhood and its share of the average (rest area times the bell).
+  // One triangle of a neighbourhood and its share of the average (rest area times the kernel).
   struct Neighbour {
     int triangle = 0;
-    // float: the lists are most of the cache, and the editor's timeline keeps a copy of it per
-    // frame; the sum is corrected in double (`scale_`), so the average of a uniform stress is
-    // still that stress to double precision.
-    float weight = 0.0f;
+    double weight = 0.0;
   };
 
   std::size_t heapBytes() const;  // util/heap_bytes.h (defined in sim/world_memory.cpp)
-  // `local` (per triangle sigma+, material frame) averaged into `out` within `radius` (m), where
+  // `local` (per triangle sigma+, material frame) averaged into `out` over the averaging length
+  // `radius` (m; stress_kernel.h), where
   // some triangle within reach has a largest principal stress of at least `threshold` (N/m).
   // The neighbourhoods are those of the last call or patch, unless the radius or the triangle
   // count changed since: between two calls a mesh must change only through tears that `patch`
@@ -77,18 +87,27 @@ class NonlocalStress {
                          std::vector<Mat2>& out);
 
  private:
-  // The neighbourhoods `patch` left for the next average (rebuildPending's walk).
+  // Where `patch` changed the mesh, for resolveReadings to look at again.
   void rebuildPending(const ClothMesh& mesh);
+  // The lattice from this call's local stresses (every triangle but the lips); false when the
+  // cloth's material extent would need too many nodes (then every triangle reads a list).
+  bool buildLattice(const std::vector<Mat2>& local, int threads, StressLattice& lattice) const;
+  // Every triangle not yet checked since the mesh changed near it: whether it reads the lattice or
+  // needs a list (the header comment). `lattice`: this call's, or none when it is unusable (then
+  // every triangle reads a list).
+  void resolveReadings(const ClothMesh& mesh, const StressLattice* lattice);
   // The cache from scratch: every triangle's centroid, area, lip flag and neighbourhood.
   void rebuild(const ClothMesh& mesh, double radius);
-  // The triangles whose centroid lies within `reach` of triangle t's, connected to it through
-  // shared edges (t first), into `region_`.
-  void gather(const ClothMesh& mesh, int t, double reach);
-  // The triangles within reach of any of the seeds, connected to them through shared edges (the
-  // seeds first), into `region_`.
-  void gatherAround(const ClothMesh& mesh, const std::vector<int>& seeds, double reach);
-  // Triangle t's neighbourhood at `radius_` (its gather, lips left out) into `neighbours_[t]`.
-  void buildNeighbours(const ClothMesh& mesh, int t);
+  // The triangles that `within` accepts, connected to triangle t through shared edges between
+  // accepted triangles (t first), into `region_`.
+  template <typename Within>
+  void gather(int t, const Within& within);
+  // The sum of the kernel's weights over the triangles a walk from t finds within its reach (lips
+  // left out): what the lattice reads at t when the walk finds all it reads.
+  double walkedKernelWeight(int t);
+  // Triangle t's list: the triangles a walk finds within the averaging length, weighted by the
+  // bell (the header comment), lips left out, into `neighbours_[t]`.
+  void buildNeighbours(int t);
   // A neighbourhood of triangle t longer than the cap, read at fewer points (nonlocal_stress.cpp).
   void thin(int t, std::vector<Neighbour>& list);
   // `local`'s distinct components into packed_, which averageAt reads.
@@ -99,19 +118,26 @@ class NonlocalStress {
   void updateAcross(const ClothMesh& mesh, int t);
 
   double radius_ = 0.0;
+  StressKernel kernel_;
+  // Per triangle: how its average is read.
+  enum class ReadsFrom : char { Unchecked, Lattice, List };
+  std::vector<ReadsFrom> readsFrom_;
+  double largestSize_ = 0.0;  // the longest rest edge of any triangle the cache has seen (m)
+  std::vector<Vec2> changedPlaces_;  // where tears changed the mesh since the last resolveReadings
   std::size_t cachedTriangles_ = 0;  // the triangle count the cache was built or last patched for
   bool built_ = false;
   std::vector<int> pending_;          // triangles patched since the last average, in order first patched
   std::vector<Vec2> pendingPlaces_;   // where those that existed before were then
   std::vector<char> pendingMark_;     // per triangle: in pending_
   std::vector<Vec2> centroid_;   // material space, per triangle
+  std::vector<StressKernel::Place> place_;  // per triangle, its centroid on the lattice
   std::vector<double> area_;     // rest area, per triangle
   std::vector<char> lip_;        // per triangle: it has a torn border edge (left out of the averages)
   // Per triangle, the triangle across each of its edges (kNone on a border): the walks read this
   // rather than the mesh's triangles and edges, a quarter of the memory a step of a walk touches.
   std::vector<std::array<int, 3>> across_;
-  // Per triangle, its neighbourhood in gather order (so a cached average sums exactly as a fresh
-  // one). A vector each rather than one packed array: a tear rebuilds a few hundred lists of new
+  // Per triangle that reads a list, its neighbourhood in gather order (so a cached average sums
+  // exactly as a fresh one); empty for the others. A vector each rather than one packed array: a tear rebuilds a few hundred lists of new
   // lengths, which a packed array could only take by moving all the others.
   std::vector<std::vector<Neighbour>> neighbours_;
   std::vector<double> scale_;    // per triangle: 1 / the sum of its list's weights (0: no list, local kept)

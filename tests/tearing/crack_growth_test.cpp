@@ -123,14 +123,6 @@ TEST(CrackGrowth, APulledSheetTearsTheSameAtEveryResolution) {
   expectResolutionIndependent(growAtThreeResolutions("sheet-pulled-apart", 1.6, kGrowthMode));
 }
 
-// The mechanism the test above needs: without the incubation, the ligament a crossing crack has not
-// cut yet and the strips whipping into their clamps start cracks of their own, differently on each
-// mesh.
-TEST(CrackGrowth, WithoutIncubationThePulledSheetTearsDifferentlyOnEachMesh) {
-  const auto runs = growAtThreeResolutions("sheet-pulled-apart", 1.6, with(kGrowthMode, {"tearing.incubation_s=0"}));
-  EXPECT_GT(spread(runs, [](const Growth& g) { return g.tornLength; }), 0.10);
-}
-
 // The clamps are the vertices within 6.5 cm of each corner: about 6.4 cm at each of the three
 // resolutions (the scene's 6 cm box holds 3.2 / 4.3 / 4.8 cm of cloth at 32 / 48 / 64^2).
 const std::vector<std::string> kSameClamps = {
@@ -141,6 +133,17 @@ const std::vector<std::string> kSameClamps = {
 TEST(CrackGrowth, ABallTearsTheSameAtEveryResolution) {
   expectResolutionIndependent(
       growAtThreeResolutions("ball-into-sheet-table4.1-cloth1", 0.5, with(kGrowthMode, kSameClamps)));
+}
+
+// The mechanism the tests above need: without the incubation, the spikes of stress the ball's
+// impact and its first slits send through the sheet start cracks of their own, differently on each
+// mesh (measured: 2.10 / 2.72 / 2.85 m torn at 32 / 48 / 64^2, against 1.32 / 1.35 / 1.32 m with
+// it). The pulled sheet alone no longer shows it: since its stress is averaged on the lattice
+// (nonlocal_stress.h) it tears 1.31 / 1.25 / 1.32 m without the incubation, within 5%.
+TEST(CrackGrowth, WithoutIncubationTheBallTearsDifferentlyOnEachMesh) {
+  const auto runs = growAtThreeResolutions("ball-into-sheet-table4.1-cloth1", 0.5,
+                                           with(with(kGrowthMode, kSameClamps), {"tearing.incubation_s=0"}));
+  EXPECT_GT(spread(runs, [](const Growth& g) { return g.tornLength; }), 0.10);
 }
 
 }  // namespace
