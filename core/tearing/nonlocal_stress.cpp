@@ -8,11 +8,6 @@ namespace weft {
 
 namespace {
 
-// A triangle whose neighbourhood (and so its average) depends on a changed one may lie a little
-// beyond the reach from it when the walk to it bends around a crack's end: the patch looks this
-// much further.
-constexpr double kPatchReach = 1.25;
-
 // A triangle reads the lattice when its walk's weights sum to the lattice's within this (relative):
 // the walk then found every triangle of any weight the lattice reads.
 constexpr double kSameWeight = 1e-9;
@@ -309,17 +304,18 @@ void NonlocalStress::resolveReadings(const ClothMesh& mesh, const StressLattice*
   BoxCounts lips, borders, changed;
   lips.build(lipCentroids, kernel_.spacing(), maxCells);
   borders.build(borderCentroids, kernel_.spacing(), maxCells);
-  // Since the last call, tears changed the mesh around these places: a list reaches as far as
-  // its walk, which may bend round a crack's end (kPatchReach); a triangle that read the lattice
-  // needs a list if a crack's lip came within its reach (a tear adds borders only as lips).
+  // Since the last call, tears changed the mesh around these places. A list can change only if a
+  // changed triangle lies (or lay) within its disc: its walk goes through the disc only, so a cut
+  // that changes which triangles it reaches runs through changed triangles within the disc too. A
+  // triangle that read the lattice needs a list if a crack's lip came within its reach (a tear
+  // adds borders only as lips).
   changed.build(changedPlaces_, kernel_.spacing(), maxCells);
   changedPlaces_.clear();
   const double near = kernel_.reach() + largestSize_;
-  const double listReach = kPatchReach * radius_;
   for (int t = 0; t < count; ++t) {
     switch (readsFrom_[t]) {
       case ReadsFrom::List:
-        if (changed.anyWithin(centroid_[t], listReach)) buildNeighbours(t);
+        if (changed.anyWithin(centroid_[t], radius_)) buildNeighbours(t);
         continue;
       case ReadsFrom::Lattice:
         if (changed.anyWithin(centroid_[t], near) && lips.anyWithin(centroid_[t], near)) {
@@ -360,9 +356,8 @@ void NonlocalStress::average(const ClothMesh& mesh, const std::vector<Mat2>& loc
     anyHot = anyHot || hot_[t];
   }
   if (!anyHot) return;
-  // The lattice is scratch of this call (the editor's timeline keeps a copy of this object per
-  // frame); resolveReadings reads it where a border is near.
-  StressLattice lattice;
+  // resolveReadings reads the lattice where a border is near.
+  StressLattice& lattice = lattice_.value;
   const bool latticeUsable = buildLattice(local, threads, lattice);
   resolveReadings(mesh, latticeUsable ? &lattice : nullptr);
   // A triangle's average reads only what lies within its reach (its list, or the lattice's

@@ -51,6 +51,7 @@
 #include "tearing/box_counts.h"
 #include "tearing/stress_kernel.h"
 #include "tearing/stress_lattice.h"
+#include "util/scratch.h"
 #include "util/types.h"
 
 namespace weft {
@@ -122,6 +123,7 @@ class NonlocalStress {
   // Per triangle: how its average is read.
   enum class ReadsFrom : char { Unchecked, Lattice, List };
   std::vector<ReadsFrom> readsFrom_;
+  Scratch<StressLattice> lattice_;  // the averages of the last call (util/scratch.h: not copied)
   double largestSize_ = 0.0;  // the longest rest edge of any triangle the cache has seen (m)
   std::vector<Vec2> changedPlaces_;  // where tears changed the mesh since the last resolveReadings
   std::size_t cachedTriangles_ = 0;  // the triangle count the cache was built or last patched for
