@@ -268,7 +268,11 @@ bool NonlocalStress::buildLattice(const std::vector<Mat2>& local, int threads, S
     lowJ = std::min(lowJ, place.y.node);
     highJ = std::max(highJ, place.y.node);
   }
-  if (!lattice.reset(lowI, highI, lowJ, highJ, std::max<std::size_t>(std::size_t{1} << 20, kNodesPerTriangle * count))) {
+  // A list's disc (radius r) is within this many nodes of its triangle's along each axis, give or
+  // take the node a point lies past: hotNear covers it.
+  const int hotReach = static_cast<int>(std::ceil(radius_ / kernel_.spacing())) + 1;
+  if (!lattice.reset(lowI, highI, lowJ, highJ, std::max<std::size_t>(std::size_t{1} << 20, kNodesPerTriangle * count),
+                     hotReach)) {
     return false;
   }
   for (std::size_t t = 0; t < count; ++t) {
@@ -370,7 +374,9 @@ void NonlocalStress::average(const ClothMesh& mesh, const std::vector<Mat2>& loc
     bool need = hot_[t];
     if (readsFrom_[t] == ReadsFrom::Lattice) {
       need = need || lattice.read(place_[t]).hot;
-    } else {
+    } else if (need || !latticeUsable || lattice.read(place_[t]).hotNear) {
+      // Where the lattice counts no hot triangle within the disc's reach, the list has none (and
+      // is not read at all: after a crack has relieved the cloth round it, most are cold).
       for (const Neighbour& n : neighbours_[t]) {
         if (need) break;
         need = hot_[n.triangle];

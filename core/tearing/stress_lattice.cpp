@@ -5,7 +5,8 @@
 
 namespace weft {
 
-bool StressLattice::reset(long lowI, long highI, long lowJ, long highJ, std::size_t maxNodes) {
+bool StressLattice::reset(long lowI, long highI, long lowJ, long highJ, std::size_t maxNodes, int hotReach) {
+  hotReach_ = hotReach;
   // A place's hat reads its node and the next.
   lowI_ = lowI;
   lowJ_ = lowJ;
@@ -24,7 +25,8 @@ bool StressLattice::reset(long lowI, long highI, long lowJ, long highJ, std::siz
 void StressLattice::splat(const StressKernel::Place& at, double weight, const Mat2& stress, bool hot) {
   const double wx[2] = {1.0 - at.x.fraction, at.x.fraction};
   const double wy[2] = {1.0 - at.y.fraction, at.y.fraction};
-  const Node source = {weight * stress(0, 0), weight * stress(1, 1), weight * stress(0, 1), weight, hot ? 1.0 : 0.0};
+  const Node source = {weight * stress(0, 0), weight * stress(1, 1), weight * stress(0, 1), weight, hot ? 1.0 : 0.0,
+                       hot ? 1.0 : 0.0};
   Node* row = &nodes_[index(at.x.node, at.y.node)];
   for (int q = 0; q < 2; ++q, row += countI_) {
     for (int p = 0; p < 2; ++p) {
@@ -39,15 +41,19 @@ void StressLattice::blur(int threads) {
   // In place: along x row by row, then along y column by column, each line copied out first so
   // that a node's sum reads the line as it was. Each node's sum runs over the taps in the same
   // order whatever the thread count.
-  auto blurLine = [](std::vector<Node>& line, Node* first, long count, long stride) {
+  // The near-hot count is summed over hotReach_ nodes each way with equal taps (it only tells
+  // whether any is there).
+  const long hotReach = hotReach_;
+  auto blurLine = [hotReach](std::vector<Node>& line, Node* first, long count, long stride) {
     line.assign(first, first);  // emptied, capacity kept
     for (long k = 0; k < count; ++k) line.push_back(first[k * stride]);
     for (long n = 0; n < count; ++n) {
       Node sum{};
       for (int k = -reach; k <= reach; ++k) {
         if (n + k < 0 || n + k >= count) continue;
-        for (int c = 0; c < kChannels; ++c) sum[c] += StressKernel::kTaps[k + reach] * line[n + k][c];
+        for (int c = 0; c < kHotNear; ++c) sum[c] += StressKernel::kTaps[k + reach] * line[n + k][c];
       }
+      for (long k = std::max(-hotReach, -n); k <= hotReach && n + k < count; ++k) sum[kHotNear] += line[n + k][kHotNear];
       first[n * stride] = sum;
     }
   };
@@ -76,6 +82,7 @@ StressLattice::Reading StressLattice::read(const StressKernel::Place& at) const 
   reading.weightedStress << sum[kXX], sum[kXY], sum[kXY], sum[kYY];
   reading.weight = sum[kWeight];
   reading.hot = sum[kHot] > 0.0;
+  reading.hotNear = sum[kHotNear] > 0.0;
   return reading;
 }
 

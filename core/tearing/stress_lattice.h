@@ -18,8 +18,9 @@ class StressLattice {
   std::size_t heapBytes() const;  // util/heap_bytes.h (defined in sim/world_memory.cpp)
   // Emptied, and sized to take sources and readings at the kernel's places (StressKernel::place)
   // whose nodes lie within [lowI, highI] x [lowJ, highJ]. Returns false, leaving the lattice
-  // unusable, when that needs more than `maxNodes` nodes.
-  bool reset(long lowI, long highI, long lowJ, long highJ, std::size_t maxNodes);
+  // unusable, when that needs more than `maxNodes` nodes. `hotReach` (in nodes): how far a
+  // reading's hotNear looks.
+  bool reset(long lowI, long highI, long lowJ, long highJ, std::size_t maxNodes, int hotReach);
   // A source at `at` (within the reset's range): `weight` (its area) times `stress`, and whether it
   // is hot (counted, so a reading tells whether any hot source lies within the kernel's reach).
   void splat(const StressKernel::Place& at, double weight, const Mat2& stress, bool hot);
@@ -30,15 +31,18 @@ class StressLattice {
     Mat2 weightedStress = Mat2::Zero();  // sum of kernel weight times source weight times stress
     double weight = 0.0;                 // sum of kernel weight times source weight
     bool hot = false;                    // some hot source has a positive kernel weight here
+    // Some hot source may lie within `hotReach` along both axes (never false when one does).
+    bool hotNear = false;
   };
   Reading read(const StressKernel::Place& at) const;
 
  private:
-  enum Channel { kXX, kYY, kXY, kWeight, kHot, kChannels };
+  enum Channel { kXX, kYY, kXY, kWeight, kHot, kHotNear, kChannels };
   using Node = std::array<double, kChannels>;
   std::size_t index(long i, long j) const {
     return static_cast<std::size_t>(i - lowI_) + static_cast<std::size_t>(j - lowJ_) * static_cast<std::size_t>(countI_);
   }
+  int hotReach_ = 0;
   long lowI_ = 0, lowJ_ = 0, countI_ = 0, countJ_ = 0;
   std::vector<Node> nodes_;  // the splatted sources, then (blur) their blurred sums
 };
