@@ -116,12 +116,6 @@ std::size_t NonlocalStress::heapBytes() const {
          weft::heapBytes(changedPlaces_) + weft::heapBytes(packed_);
 }
 
-std::size_t StressLattice::heapBytes() const {
-  return weft::heapBytes(nodes_);
-}
-
-std::size_t BoxCounts::heapBytes() const { return weft::heapBytes(summed_); }
-
 std::size_t TearSearch::heapBytes() const {
   return weft::heapBytes(triangleAt_) + weft::heapBytes(rowStart_) + weft::heapBytes(around_) +
          weft::heapBytes(walked_) + weft::heapBytes(bound_) + weft::heapBytes(best_) +

@@ -11,7 +11,6 @@ namespace weft {
 
 class BoxCounts {
  public:
-  std::size_t heapBytes() const;  // util/heap_bytes.h (defined in sim/world_memory.cpp)
   // The grid over the points' bounding box, cells of side `cell` (larger where that would need
   // more than `maxCells` cells).
   void build(const std::vector<Vec2>& points, double cell, std::size_t maxCells);
@@ -25,7 +24,5 @@ class BoxCounts {
   std::vector<int> summed_;  // (countX_ + 1) x (countY_ + 1): points in the cells below and left
   long cellOf(double coordinate, double origin) const;
 };
-
-inline std::size_t heapBytes(const BoxCounts& counts) { return counts.heapBytes(); }
 
 }  // namespace weft

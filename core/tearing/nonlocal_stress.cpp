@@ -348,7 +348,7 @@ void NonlocalStress::resolveReadings(const ClothMesh& mesh, const StressLattice*
 
 void NonlocalStress::average(const ClothMesh& mesh, const std::vector<Mat2>& local, double radius, double threshold,
                              std::vector<Mat2>& out, int threads) {
-  if (built_ && radius == radius_ && mesh.tris.size() == cachedTriangles_) rebuildPending(mesh);
+  if (built_ && radius == radius_ && mesh.tris.size() == cachedTriangles_) collectChangedPlaces();
   if (!built_ || radius != radius_ || mesh.tris.size() != cachedTriangles_) rebuild(mesh, radius);
   out = local;
   pack(local);
@@ -369,11 +369,15 @@ void NonlocalStress::average(const ClothMesh& mesh, const std::vector<Mat2>& loc
   // the local stress does. A lip is not in its own list: a hot one is averaged, or it would keep
   // the stretch its average leaves out.
   needed_.assign(count, 0);
+  std::vector<Mat2>& latticeAverage = latticeAverage_.value;
+  latticeAverage.resize(count);
 #pragma omp parallel for num_threads(std::max(1, threads)) schedule(static)
   for (int t = 0; t < count; ++t) {
     bool need = hot_[t];
     if (readsFrom_[t] == ReadsFrom::Lattice) {
-      need = need || lattice.read(place_[t]).hot;
+      const StressLattice::Reading reading = lattice.read(place_[t]);
+      latticeAverage[t] = reading.weight > 0.0 ? Mat2(reading.weightedStress / reading.weight) : local[t];
+      need = need || reading.hot;
     } else if (need || !latticeUsable || lattice.read(place_[t]).hotNear) {
       // Where the lattice counts no hot triangle within the disc's reach, the list has none (and
       // is not read at all: after a crack has relieved the cloth round it, most are cold).
@@ -395,11 +399,7 @@ void NonlocalStress::average(const ClothMesh& mesh, const std::vector<Mat2>& loc
   for (int t = 0; t < count; ++t) {
     const Triangle& tri = mesh.tris[t];
     if (!(needed_[t] || vertexNeeded_[tri.v[0]] || vertexNeeded_[tri.v[1]] || vertexNeeded_[tri.v[2]])) continue;
-    if (readsFrom_[t] == ReadsFrom::List) {
-      out[t] = averageAt(local, t);
-    } else if (const StressLattice::Reading reading = lattice.read(place_[t]); reading.weight > 0.0) {
-      out[t] = reading.weightedStress / reading.weight;
-    }
+    out[t] = readsFrom_[t] == ReadsFrom::List ? averageAt(local, t) : latticeAverage[t];
   }
 }
 
@@ -454,7 +454,7 @@ std::vector<int> NonlocalStress::patch(const ClothMesh& mesh, const std::vector<
   return seeds;
 }
 
-void NonlocalStress::rebuildPending(const ClothMesh&) {
+void NonlocalStress::collectChangedPlaces() {
   if (pending_.empty()) return;
   changedPlaces_.insert(changedPlaces_.end(), pendingPlaces_.begin(), pendingPlaces_.end());
   for (int t : pending_) changedPlaces_.push_back(centroid_[t]);

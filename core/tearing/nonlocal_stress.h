@@ -88,8 +88,9 @@ class NonlocalStress {
                          std::vector<Mat2>& out);
 
  private:
-  // Where `patch` changed the mesh, for resolveReadings to look at again.
-  void rebuildPending(const ClothMesh& mesh);
+  // Where `patch` changed the mesh (pending_, pendingPlaces_) into changedPlaces_, for
+  // resolveReadings to look at again.
+  void collectChangedPlaces();
   // The lattice from this call's local stresses (every triangle but the lips); false when the
   // cloth's material extent would need too many nodes (then every triangle reads a list).
   bool buildLattice(const std::vector<Mat2>& local, int threads, StressLattice& lattice) const;
@@ -123,6 +124,9 @@ class NonlocalStress {
   // Per triangle: how its average is read.
   enum class ReadsFrom : char { Unchecked, Lattice, List };
   std::vector<ReadsFrom> readsFrom_;
+  // Per triangle that reads the lattice, this call: its average (or its local stress where the
+  // lattice weighs nothing there), read once for both of average's passes (util/scratch.h).
+  Scratch<std::vector<Mat2>> latticeAverage_;
   Scratch<StressLattice> lattice_;  // the averages of the last call (util/scratch.h: not copied)
   double largestSize_ = 0.0;  // the longest rest edge of any triangle the cache has seen (m)
   std::vector<Vec2> changedPlaces_;  // where tears changed the mesh since the last resolveReadings

@@ -5,7 +5,7 @@
 
 namespace weft {
 
-StressKernel::StressKernel(double length) : length_(length), spacing_(length / std::sqrt(8.0 * (tapVariance() + 1.0 / 3.0))) {}
+StressKernel::StressKernel(double length) : spacing_(length / std::sqrt(8.0 * (tapVariance() + 1.0 / 3.0))) {}
 
 double StressKernel::along(double a, double b) const {
   const Hat ha = hat(a), hb = hat(b);

@@ -31,7 +31,6 @@ namespace weft {
 class StressKernel {
  public:
   explicit StressKernel(double length = 0.0);
-  double length() const { return length_; }
   double spacing() const { return spacing_; }
   // The weight is zero when the points' x or y differ by this much or more.
   double reach() const { return (kTapReach + 2) * spacing_; }
@@ -69,7 +68,6 @@ class StressKernel {
   }
 
  private:
-  double length_ = 0.0;
   double spacing_ = 0.0;
 };
 

@@ -15,7 +15,6 @@ namespace weft {
 
 class StressLattice {
  public:
-  std::size_t heapBytes() const;  // util/heap_bytes.h (defined in sim/world_memory.cpp)
   // Emptied, and sized to take sources and readings at the kernel's places (StressKernel::place)
   // whose nodes lie within [lowI, highI] x [lowJ, highJ]. Returns false, leaving the lattice
   // unusable, when that needs more than `maxNodes` nodes. `hotReach` (in nodes): how far a
@@ -46,7 +45,5 @@ class StressLattice {
   long lowI_ = 0, lowJ_ = 0, countI_ = 0, countJ_ = 0;
   std::vector<Node> nodes_;  // the splatted sources, then (blur) their blurred sums
 };
-
-inline std::size_t heapBytes(const StressLattice& lattice) { return lattice.heapBytes(); }
 
 }  // namespace weft
