@@ -22,10 +22,15 @@ double wrapFrom(double angle, double from) {
 
 Vec2 gAt(double theta) { return Vec2(std::sin(theta), -std::cos(theta)); }
 
-// |S n| for the line at `angle` on a closed uniform fan: the traction across it. n = -g(angle).
-double tractionAcross(const StressFan& fan, double angle) { return (fan.uniformStress * gAt(angle)).norm(); }
+double tractionAcross(const StressFan& fan, double angle) { return weft::tractionAcross(fan.uniformStress, angle); }
 
 bool readsUniformly(const StressFan& fan) { return fan.uniform && fan.closed; }
+
+}  // namespace
+
+double tractionAcross(const Mat2& stress, double angle) { return (stress * gAt(angle)).norm(); }
+
+namespace {
 
 // The traction force on the vertex from the part of the fan inside the arc [from, from + length]
 // (length <= 2 pi), with g at the arc's ends given: each sector's overlap with the arc is at most

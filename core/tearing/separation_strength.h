@@ -77,6 +77,10 @@ std::vector<TriangleCorners> triangleCorners(const ClothMesh& mesh);
 void stressFan(const ClothMesh& mesh, int vertex, std::span<const int> around,
                const std::vector<TriangleCorners>& corners, const std::vector<Mat2>& triangleStress, StressFan& outFan);
 
+// |S n| for the line at `angle` (n = -g(angle)): the traction across it, which is the separation
+// strength of a closed fan read as the one stress S (makeUniform), without building the fan.
+double tractionAcross(const Mat2& stress, double angle);
+
 // zeta (N/m) for the line through the vertex at `angle` (rad, material space; for an open fan,
 // the ray at `angle`, which must lie inside the fan).
 double separationStrength(const StressFan& fan, double angle);

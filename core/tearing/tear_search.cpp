@@ -38,11 +38,15 @@ CrackPlace crackPlaceOf(const ClothMesh& mesh, const VertexFan& fan) {
 
 // The line across the fan's mean largest principal stress: where an isotropic fabric tears, so the
 // first line to try when asking whether a vertex is overloaded at all.
+double principalLineAngleOf(const Mat2& weighted) {
+  // The largest principal direction is at 0.5 atan2(2 s01, s00 - s11); the line runs across it.
+  return 0.5 * std::atan2(2.0 * weighted(0, 1), weighted(0, 0) - weighted(1, 1)) + 0.5 * std::numbers::pi;
+}
+
 double principalLineAngle(const StressFan& fan) {
   Mat2 mean = Mat2::Zero();
   for (const FanSector& sector : fan.sectors) mean += sector.stress * sector.span;
-  // The largest principal direction is at 0.5 atan2(2 s01, s00 - s11); the line runs across it.
-  return 0.5 * std::atan2(2.0 * mean(0, 1), mean(0, 0) - mean(1, 1)) + 0.5 * std::numbers::pi;
+  return principalLineAngleOf(mean);
 }
 
 // Heap order: the larger key first, then the lower vertex (ties go to the lower vertex id).
@@ -77,6 +81,8 @@ void TearSearch::start(const ClothMesh& mesh, const std::vector<TriangleCorners>
   const int n = mesh.vertexCount();
   if (!rowsValid_ || rowsVertices_ != mesh.x.size() || rowsTriangles_ != mesh.tris.size()) buildRows(mesh, corners);
   walked_.assign(n, 0);
+  fromRows_.assign(n, 0);
+  rowMean_.resize(n);
   bound_.assign(n, 0.0);
   best_.assign(n, TearCandidate{});
   excluded_.assign(n, 0);
@@ -116,6 +122,7 @@ void TearSearch::buildRows(const ClothMesh& mesh, const std::vector<TriangleCorn
       around_[fill[v]++] = t;
     }
   }
+  rowPlace_.assign(n, kUnknownPlace);
   onBorder_.assign(n, 0);
   for (const Edge& edge : mesh.edges) {
     if (edge.isBoundary()) onBorder_[edge.v[0]] = onBorder_[edge.v[1]] = 1;
@@ -153,7 +160,11 @@ void TearSearch::screenAndLookAtAll(const ClothMesh& mesh, const std::vector<Tri
       ++counts.vertices;
       ++version_[v];
       sharpened_[v] = 0;
-      bound_[v] = spans > 0.0 ? omegaCeiling(spectralNorm(sum / spans), 1.0, lowestMultiplierAt(mesh, v)) : 0.0;
+      if (spans > 0.0) {
+        rowMean_[v] = sum / spans;  // as meanStress of the fan stressFan builds from the rows
+        fromRows_[v] = 1;
+      }
+      bound_[v] = spans > 0.0 ? omegaCeiling(spectralNorm(rowMean_[v]), 1.0, lowestMultiplierAt(mesh, v)) : 0.0;
       if (bound_[v] < 1.0) {
         ++counts.skipped;
       } else {
@@ -204,6 +215,9 @@ void TearSearch::refresh(const ClothMesh& mesh, const std::vector<TriangleCorner
   place_.resize(n, CrackPlace::None);
   version_.resize(n, 0);
   walked_.resize(n, 1);
+  fromRows_.resize(n, 0);
+  rowMean_.resize(n);
+  rowPlace_.resize(n, kUnknownPlace);
   std::vector<int> vertices(extraVertices);
   for (int t : triangles) {
     for (int v : mesh.tris[t].v) {
@@ -243,19 +257,42 @@ bool TearSearch::overloadedAsStart(const ClothMesh& mesh, const std::vector<Tria
                                    TearSearchCounts& counts) {
   if (vertex < 0 || vertex >= static_cast<int>(bound_.size()) || bound_[vertex] < 1.0) return false;
   if (place_[vertex] == CrackPlace::Tip) return false;
+  if (readsMeanFromRows(vertex) && std::isfinite(hintAngle)) {
+    // Last step's line, on the mean the screen summed: most held vertices are settled by it
+    // without building their fans (the same value the fan's reading gives).
+    if (meanLineAboveOne(mesh, vertex, hintAngle, counts)) {
+      angle = hintAngle;
+      return true;
+    }
+    hintAngle = std::numeric_limits<double>::quiet_NaN();  // tried: the fan's search skips it
+  }
   fanOf(mesh, corners, stress, vertex, fan_);
   return anyLineAboveOneAt(fan_, *table_, weftAngleRad_, hintAngle, angle, counts,
                            scaleAt(mesh, vertex, 1.0, !fan_.closed));
 }
 
+bool TearSearch::meanLineAboveOne(const ClothMesh& mesh, int vertex, double angle, TearSearchCounts& counts) const {
+  ++counts.linesEvaluated;
+  // As anyLineAboveOneAt reads a line on a closed uniform fan.
+  return tractionAcross(rowMean_[vertex], angle) /
+             (scaleAt(mesh, vertex, 1.0, false).of(angle) *
+              requiredStrength(*table_, angleFromWarpDeg(angle, weftAngleRad_))) >
+         1.0;
+}
+
 CrackPlace TearSearch::fanOf(const ClothMesh& mesh, const std::vector<TriangleCorners>& corners,
-                       const std::vector<Mat2>& stress, int vertex, StressFan& fan) const {
+                       const std::vector<Mat2>& stress, int vertex, StressFan& fan) {
   if (!walked_[vertex]) {
     const std::span<const int> triangles(around_.data() + rowStart_[vertex], around_.data() + rowStart_[vertex + 1]);
     stressFan(mesh, vertex, triangles, corners, stress, fan);
     if (settings_.closedFanAsOne && fan.closed) makeUniform(fan, meanStress(fan));
-    // Only a vertex on a border can be on a crack: walk those (few) fans to look at their edges.
-    return fan.closed ? CrackPlace::None : crackPlaceOf(mesh, walkFan(mesh, vertex, triangleAt_[vertex]));
+    // Only a vertex on a border can be on a crack: walk those (few) fans to look at their edges,
+    // once while the rows hold.
+    if (fan.closed) return CrackPlace::None;
+    if (rowPlace_[vertex] == kUnknownPlace) {
+      rowPlace_[vertex] = static_cast<signed char>(crackPlaceOf(mesh, walkFan(mesh, vertex, triangleAt_[vertex])));
+    }
+    return static_cast<CrackPlace>(rowPlace_[vertex]);
   }
   const VertexFan walked = walkFan(mesh, vertex, triangleAt_[vertex]);
   stressFan(mesh, vertex, std::span<const int>(walked.triangles), corners, stress, fan);
@@ -330,7 +367,15 @@ std::optional<TearCandidate> TearSearch::best(const ClothMesh& mesh, const std::
     if (next.key < leading) break;  // no waiting vertex can beat it
     popEntry(waiting_);
     const int v = next.vertex;
-    const CrackPlace place = fanOf(mesh, corners, stress, v, fan_);
+    // An interior vertex the screen read from the rows needs its fan only if it is searched: its
+    // incubation question reads the mean first.
+    const bool fromRows = readsMeanFromRows(v);
+    bool fanBuilt = !fromRows;
+    const CrackPlace place = fromRows ? CrackPlace::None : fanOf(mesh, corners, stress, v, fan_);
+    auto buildFan = [&] {
+      if (!fanBuilt) fanOf(mesh, corners, stress, v, fan_);
+      fanBuilt = true;
+    };
     if (settings_.startClearance > 0.0 && place != CrackPlace::Tip) {
       // A start this close to a crack is refused (tear_stage.cpp); cracks only grow within a step,
       // so it stays refused: held, not searched (it may still tear as a tip, if a crack reaches it).
@@ -342,13 +387,32 @@ std::optional<TearCandidate> TearSearch::best(const ClothMesh& mesh, const std::
     }
     if (gated_ && !mature_[v] && place != CrackPlace::Tip) {
       double angle = 0.0;
-      if (anyLineAboveOneAt(fan_, *table_, weftAngleRad_, principalLineAngle(fan_), angle, counts,
-                            scaleAt(mesh, v, 1.0, !fan_.closed))) {
+      bool overloaded = false;
+      if (fromRows) {
+        // The line across the mean's largest principal stress first, as the fan would try it
+        // (the mean weighted by the rows' spans, in the fan's order).
+        Mat2 weighted = Mat2::Zero();
+        for (int i = rowStart_[v]; i < rowStart_[v + 1]; ++i) weighted += rowMean_[v] * aroundSpan_[i];
+        const double first = principalLineAngleOf(weighted);
+        overloaded = meanLineAboveOne(mesh, v, first, counts);
+        if (overloaded) {
+          angle = first;
+        } else {
+          buildFan();
+          overloaded = anyLineAboveOneAt(fan_, *table_, weftAngleRad_, std::numeric_limits<double>::quiet_NaN(),
+                                         angle, counts, scaleAt(mesh, v, 1.0, !fan_.closed));
+        }
+      } else {
+        overloaded = anyLineAboveOneAt(fan_, *table_, weftAngleRad_, principalLineAngle(fan_), angle, counts,
+                                       scaleAt(mesh, v, 1.0, !fan_.closed));
+      }
+      if (overloaded) {
         newlyOverloaded_.push_back(Overloaded{v, angle});
         held_[v] = 1;
       }
       continue;
     }
+    buildFan();
     if (!unbounded && !sharpened_[v] && place != CrackPlace::Tip) {
       // Before searching the whole fan, the cheaper piecewise bound: most vertices of a loaded
       // sheet that pass the fan's bound are settled by it (they stay below 1), and the others wait

@@ -111,7 +111,7 @@ class TearSearch {
   void boundAt(const ClothMesh& mesh, const std::vector<TriangleCorners>& corners, const std::vector<Mat2>& stress,
                int vertex, TearSearchCounts& counts);
   CrackPlace fanOf(const ClothMesh& mesh, const std::vector<TriangleCorners>& corners, const std::vector<Mat2>& stress,
-             int vertex, StressFan& fan) const;
+             int vertex, StressFan& fan);
   double strengthScaleAt(const ClothMesh& mesh, int vertex, const StressFan& fan) const;
   // The strength scale of the vertex's lines (factor times the map's, strength_map.h), and the
   // smallest map multiplier any of its lines can read (1 without a map).
@@ -133,6 +133,18 @@ class TearSearch {
   std::vector<int> rowStart_, around_;
   std::vector<double> aroundSpan_;       // per entry of around_: the vertex's corner angle in that triangle
   std::vector<char> walked_;
+  // Per vertex, this step: the mean stress of its closed fan read as one (closedFanAsOne), summed
+  // from the rows by the screen; valid where fromRows_ is set and the vertex is not walked_ (no
+  // tear has changed its fan's stress since). The incubation questions read it without the fan.
+  std::vector<Mat2> rowMean_;
+  std::vector<char> fromRows_;
+  // Per vertex on a border, while the rows are valid: its crack place as a walk of its fan found
+  // it (kUnknownPlace until then). The place changes only with a tear, which invalidates the rows.
+  std::vector<signed char> rowPlace_;
+  static constexpr signed char kUnknownPlace = -1;
+  bool readsMeanFromRows(int vertex) const { return fromRows_[vertex] && !walked_[vertex]; }
+  // Whether the line at `angle` has omega > 1 on the vertex's mean from the rows (a start).
+  bool meanLineAboveOne(const ClothMesh& mesh, int vertex, double angle, TearSearchCounts& counts) const;
   std::vector<double> bound_;            // per vertex: bound on its best omega (0: cannot tear)
   std::vector<TearCandidate> best_;      // per vertex: its best line, valid while its heap entry is current
   std::vector<char> excluded_;
