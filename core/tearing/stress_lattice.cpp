@@ -49,9 +49,18 @@ void StressLattice::blur(int threads) {
     for (long k = 0; k < count; ++k) line.push_back(first[k * stride]);
     for (long n = 0; n < count; ++n) {
       Node sum{};
-      for (int k = -reach; k <= reach; ++k) {
-        if (n + k < 0 || n + k >= count) continue;
-        for (int c = 0; c < kHotNear; ++c) sum[c] += StressKernel::kTaps[k + reach] * line[n + k][c];
+      if (n >= reach && n + reach < count) {
+        // Every tap inside the line (most nodes): the same sums without the bounds tests, which
+        // kept the compiler from unrolling them.
+        const Node* source = &line[n - reach];
+        for (int k = 0; k <= 2 * reach; ++k) {
+          for (int c = 0; c < kHotNear; ++c) sum[c] += StressKernel::kTaps[k] * source[k][c];
+        }
+      } else {
+        for (int k = -reach; k <= reach; ++k) {
+          if (n + k < 0 || n + k >= count) continue;
+          for (int c = 0; c < kHotNear; ++c) sum[c] += StressKernel::kTaps[k + reach] * line[n + k][c];
+        }
       }
       for (long k = std::max(-hotReach, -n); k <= hotReach && n + k < count; ++k) sum[kHotNear] += line[n + k][kHotNear];
       first[n * stride] = sum;

@@ -84,7 +84,7 @@ void TearSearch::start(const ClothMesh& mesh, const std::vector<TriangleCorners>
   fromRows_.assign(n, 0);
   rowMean_.resize(n);
   bound_.assign(n, 0.0);
-  best_.assign(n, TearCandidate{});
+  best_.resize(n);  // read only for a heap entry, which is made after its vertex's best_
   excluded_.assign(n, 0);
   held_.assign(n, 0);
   sharpened_.assign(n, 0);
@@ -92,7 +92,7 @@ void TearSearch::start(const ClothMesh& mesh, const std::vector<TriangleCorners>
   mature_.clear();
   newlyOverloaded_.clear();
   place_.assign(n, CrackPlace::None);
-  version_.assign(n, 0);
+  version_.resize(n, 0);  // the heaps are emptied: the versions only grow from here
   crackVertices_.clear();
   crackCellsStale_ = true;
   waiting_.clear();

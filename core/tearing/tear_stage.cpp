@@ -154,10 +154,10 @@ bool TearStage::incubated(const Incubating& vertex, double time, double dt) cons
 void TearStage::holdIncubating(const Cloth& cloth, const std::vector<TriangleCorners>& corners,
                                const std::unordered_map<int, Incubating>& before, double time, double dt,
                                std::unordered_map<int, Incubating>& now) {
-  // In vertex order, so the work done does not depend on the map's order.
-  std::vector<std::pair<int, Incubating>> waiting(before.begin(), before.end());
-  std::sort(waiting.begin(), waiting.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-  for (auto [vertex, incubating] : waiting) {
+  // In the map's order: each question reads only its own vertex's fan, so the answers and what
+  // they leave (held vertices, the next map) do not depend on the order they are asked in.
+  now.reserve(before.size());
+  for (auto [vertex, incubating] : before) {
     if (incubated(incubating, time, dt)) continue;  // offered as usual: it may start a crack now
     if (!search_.overloadedAsStart(cloth.mesh, corners, stress_, vertex, incubating.angle, incubating.angle,
                                    stats_.search)) {
