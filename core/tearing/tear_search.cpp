@@ -96,6 +96,7 @@ void TearSearch::start(const ClothMesh& mesh, const std::vector<TriangleCorners>
   crackVertices_.clear();
   crackCellsStale_ = true;
   waiting_.clear();
+  waitingIsHeap_ = false;
   evaluatedHeap_.clear();
   unboundedHeap_.clear();
   screenAndLookAtAll(mesh, corners, stress, counts);
@@ -168,7 +169,7 @@ void TearSearch::screenAndLookAtAll(const ClothMesh& mesh, const std::vector<Tri
       if (bound_[v] < 1.0) {
         ++counts.skipped;
       } else {
-        pushEntry(waiting_, Entry{bound_[v], v, version_[v]});
+        wait(Entry{bound_[v], v, version_[v]});
       }
       continue;
     }
@@ -191,7 +192,7 @@ void TearSearch::screenAndLookAtAll(const ClothMesh& mesh, const std::vector<Tri
       if (bound_[v] < 1.0) {
         ++counts.skipped;
       } else {
-        pushEntry(waiting_, Entry{bound_[v], v, version_[v]});
+        wait(Entry{bound_[v], v, version_[v]});
       }
       continue;
     }
@@ -245,6 +246,24 @@ void TearSearch::gateStarts(std::vector<char> mature) {
 
 void TearSearch::hold(int vertex) {
   if (vertex >= 0 && vertex < static_cast<int>(held_.size())) held_[vertex] = 1;
+}
+
+void TearSearch::wait(const Entry& entry) {
+  if (waitingIsHeap_) {
+    pushEntry(waiting_, entry);
+  } else {
+    waiting_.push_back(entry);
+  }
+}
+
+void TearSearch::heapWaiting() {
+  if (waitingIsHeap_) return;
+  // An entry not offerable now never becomes offerable this step (holds, exclusions and versions
+  // only grow): dropped here rather than popped one by one. The heap's order is total (the vertex
+  // id breaks ties), so the pops come in the same order however it was built.
+  std::erase_if(waiting_, [&](const Entry& entry) { return !offerable(entry); });
+  std::make_heap(waiting_.begin(), waiting_.end(), HeapOrder{});
+  waitingIsHeap_ = true;
 }
 
 bool TearSearch::offerable(const Entry& entry) const {
@@ -306,7 +325,7 @@ void TearSearch::lookAt(const ClothMesh& mesh, const std::vector<TriangleCorners
   ++version_[vertex];
   sharpened_[vertex] = 0;
   boundAt(mesh, corners, stress, vertex, counts);
-  if (bound_[vertex] >= 1.0) pushEntry(waiting_, Entry{bound_[vertex], vertex, version_[vertex]});
+  if (bound_[vertex] >= 1.0) wait(Entry{bound_[vertex], vertex, version_[vertex]});
 }
 
 void TearSearch::boundAt(const ClothMesh& mesh, const std::vector<TriangleCorners>& corners,
@@ -352,6 +371,7 @@ std::optional<TearCandidate> TearSearch::best(const ClothMesh& mesh, const std::
   // Branch and bound: the waiting vertices in order of decreasing bound, until none left can beat
   // the best line found (ties are still evaluated, so the lower vertex id wins).
   while (true) {
+    heapWaiting();
     dropStale(waiting_);
     dropStale(evaluatedHeap_);
     dropStale(unboundedHeap_);

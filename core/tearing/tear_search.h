@@ -177,6 +177,11 @@ class TearSearch {
     unsigned version;
   };
   std::vector<Entry> waiting_;    // max-heap by bound: not yet evaluated since last looked at
+  // The start fills waiting_ unordered; the first search makes it a heap once the step's held
+  // vertices are known (thousands of them on a loaded sheet, each a push and a pop otherwise).
+  bool waitingIsHeap_ = false;
+  void wait(const Entry& entry);
+  void heapWaiting();
   std::vector<Entry> evaluatedHeap_;  // max-heap by omega: evaluated starts (and tips with a finite bound)
   std::vector<Entry> unboundedHeap_;  // max-heap by omega: evaluated vertices without a bound (tips
                                       // that read ahead; every vertex when the bound is off)

@@ -152,18 +152,15 @@ bool TearStage::incubated(const Incubating& vertex, double time, double dt) cons
 }
 
 void TearStage::holdIncubating(const Cloth& cloth, const std::vector<TriangleCorners>& corners,
-                               const std::unordered_map<int, Incubating>& before, double time, double dt,
-                               std::unordered_map<int, Incubating>& now) {
-  // In the map's order: each question reads only its own vertex's fan, so the answers and what
-  // they leave (held vertices, the next map) do not depend on the order they are asked in.
-  now.reserve(before.size());
-  for (auto [vertex, incubating] : before) {
+                               const IncubationClocks& before, double time, double dt, IncubationClocks& now) {
+  for (int vertex : before.vertices()) {
+    Incubating incubating = before.at(vertex);
     if (incubated(incubating, time, dt)) continue;  // offered as usual: it may start a crack now
     if (!search_.overloadedAsStart(cloth.mesh, corners, stress_, vertex, incubating.angle, incubating.angle,
                                    stats_.search)) {
       continue;  // its omega fell to 1 or below: its clock stops
     }
-    now[vertex] = incubating;
+    now.set(vertex, incubating);
     search_.hold(vertex);
   }
 }
@@ -197,10 +194,11 @@ TopologyChange TearStage::tearCloth(Cloth& cloth, int clothIndex, const Membrane
   if (corners.size() != cloth.mesh.tris.size()) corners = triangleCorners(cloth.mesh);
   if (overshoot_.size() != corners_.size()) overshoot_.resize(corners_.size());
   if (overloadedSince_.size() != corners_.size()) overloadedSince_.resize(corners_.size());
-  const std::unordered_map<int, Incubating>& overloadedBefore = overloadedSince_[clothIndex];
+  const IncubationClocks& overloadedBefore = overloadedSince_[clothIndex];
   // The vertices overloaded this step: held while incubating, offered once mature, or found newly
   // above 1.
-  std::unordered_map<int, Incubating> overloadedNow;
+  IncubationClocks& overloadedNow = overloadedNow_.value;
+  overloadedNow.clear();
   {
     StageTimer timer(profile, "tear_stress");
     tensileStresses(cloth, ahead, localStress_);
@@ -227,7 +225,7 @@ TopologyChange TearStage::tearCloth(Cloth& cloth, int clothIndex, const Membrane
       // Only vertices that have waited long enough are offered as crack starts; the others are
       // asked only whether they are (still) overloaded.
       std::vector<char> mature(cloth.mesh.x.size(), 0);
-      for (const auto& [vertex, incubating] : overloadedBefore) mature[vertex] = incubated(incubating, time, dt);
+      for (int vertex : overloadedBefore.vertices()) mature[vertex] = incubated(overloadedBefore.at(vertex), time, dt);
       search_.gateStarts(std::move(mature));
       holdIncubating(cloth, corners, overloadedBefore, time, dt, overloadedNow);
     }
@@ -270,10 +268,9 @@ TopologyChange TearStage::tearCloth(Cloth& cloth, int clothIndex, const Membrane
     if (starts && spec_.incubation > 0.0) {
       // Held vertices are never offered as starts: this one has waited long enough, or its omega
       // has just gone above 1.
-      const auto since = overloadedBefore.find(vertex);
-      overloadedNow[vertex] =
-          Incubating{since != overloadedBefore.end() ? since->second.since : time - dt, best->angle};
-      if (!incubated(overloadedNow[vertex], time, dt)) {
+      const Incubating* since = overloadedBefore.find(vertex);
+      overloadedNow.set(vertex, Incubating{since != nullptr ? since->since : time - dt, best->angle});
+      if (!incubated(*overloadedNow.find(vertex), time, dt)) {
         search_.exclude(vertex);
         continue;
       }
@@ -395,10 +392,12 @@ TopologyChange TearStage::tearCloth(Cloth& cloth, int clothIndex, const Membrane
   if (spec_.incubation > 0.0 && !tipsOnly) {
     // The vertices whose omega went above 1 this step start their clocks.
     for (const TearSearch::Overloaded& found : search_.newlyOverloaded()) {
-      overloadedNow.try_emplace(found.vertex, Incubating{time - dt, found.angle});
+      overloadedNow.add(found.vertex, Incubating{time - dt, found.angle});
     }
-    if (tears >= maxTears) overloadedNow.insert(overloadedBefore.begin(), overloadedBefore.end());
-    overloadedSince_[clothIndex] = std::move(overloadedNow);
+    if (tears >= maxTears) {
+      for (int vertex : overloadedBefore.vertices()) overloadedNow.add(vertex, overloadedBefore.at(vertex));
+    }
+    std::swap(overloadedSince_[clothIndex], overloadedNow);
   }
   // A tip that ran past its reach (a tear opens a whole edge) owes the excess to the next step, so
   // that on average no tip runs faster than crack_speed, whatever the element size.

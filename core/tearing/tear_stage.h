@@ -37,10 +37,12 @@
 #include "scene/scene.h"
 #include "sim/stage_profile.h"
 #include "tearing/crack_relaxation.h"
+#include "tearing/incubation_clocks.h"
 #include "tearing/nonlocal_stress.h"
 #include "tearing/tear_candidates.h"
 #include "tearing/tear_record.h"
 #include "tearing/tear_search.h"
+#include "util/scratch.h"
 #include "util/types.h"
 
 namespace weft {
@@ -75,15 +77,13 @@ class TearStage {
   // `tipsOnly`: a step between samples (above): only crack tips are offered.
   TopologyChange tearCloth(Cloth& cloth, int clothIndex, const MembraneAhead* ahead, double time, double dt,
                            int threads, bool tipsOnly, StageProfile& profile);
-  struct Incubating;
   // Whether the vertex has been overloaded for the incubation time at the end of this step.
   bool incubated(const Incubating& vertex, double time, double dt) const;
   // The vertices still incubating whose omega stays above 1 are kept in `now` and held from
   // starting a crack this step, at the cost of one line each where their load barely moved (not a
   // search of their whole fan, as offering them would cost).
   void holdIncubating(const Cloth& cloth, const std::vector<TriangleCorners>& corners,
-                      const std::unordered_map<int, Incubating>& before, double time, double dt,
-                      std::unordered_map<int, Incubating>& now);
+                      const IncubationClocks& before, double time, double dt, IncubationClocks& now);
 
   TearingSpec spec_;
   TearSearchSettings searchSettings_;
@@ -96,12 +96,8 @@ class TearStage {
   std::vector<std::vector<TriangleCorners>> corners_;  // per cloth, patched after each tear
   TearSearch search_;
   int searchedCloth_ = -1;  // the cloth search_ last searched: its rows are kept for that cloth only
-  // A vertex whose omega is above 1, waiting out the incubation before it may start a crack.
-  struct Incubating {
-    double since = 0.0;  // when its omega went above 1 (s); kept while it stays above 1
-    double angle = 0.0;  // its last line above 1 (rad, material space): tried first next step
-  };
-  std::vector<std::unordered_map<int, Incubating>> overloadedSince_;  // per cloth
+  std::vector<IncubationClocks> overloadedSince_;  // per cloth
+  Scratch<IncubationClocks> overloadedNow_;       // this step's, becomes the cloth's at its end
   std::vector<std::unordered_map<int, double>> overshoot_;  // per cloth: crack tip -> metres run past its
                                                             // last step's reach, owed to the next
   std::vector<TearRecord> log_;
