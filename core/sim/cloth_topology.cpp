@@ -79,4 +79,30 @@ void applyTopologyChange(Cloth& cloth, const TopologyChange& change) {
   extendPinTracks(cloth, change);
 }
 
+void applyTopologyChangeButHinges(Cloth& cloth, const TopologyChange& change) {
+  refreshMembranes(cloth, change);
+  extendPinTracks(cloth, change);
+}
+
+void refreshHingesAfter(Cloth& cloth, const std::vector<std::vector<int>>& changedEdgesInOrder) {
+  if (!bendingEnabled(cloth.material.bending) || changedEdgesInOrder.empty()) return;
+  // Per edge, the last change that listed it: its hinge is that change's (an earlier change's was
+  // dropped by a later one), and a hinge from before every change survives only if none listed it.
+  std::vector<int> lastChange(cloth.mesh.edges.size(), -1);
+  for (std::size_t i = 0; i < changedEdgesInOrder.size(); ++i) {
+    for (int e : changedEdgesInOrder[i]) lastChange[e] = static_cast<int>(i);
+  }
+  std::erase_if(cloth.hinges, [&](const BendingHinge& h) {
+    return h.edge >= 0 && h.edge < static_cast<int>(lastChange.size()) && lastChange[h.edge] >= 0;
+  });
+  for (std::size_t i = 0; i < changedEdgesInOrder.size(); ++i) {
+    for (int e : changedEdgesInOrder[i]) {
+      if (lastChange[e] != static_cast<int>(i)) continue;
+      if (std::optional<BendingHinge> hinge = makeBendingHinge(cloth.mesh, e, cloth.weftAngleRad)) {
+        cloth.hinges.push_back(*hinge);
+      }
+    }
+  }
+}
+
 }  // namespace weft

@@ -1,5 +1,7 @@
 #pragma once
 // Patching a cloth's caches after a topology change (a tear), without rebuilding them.
+#include <vector>
+
 #include "mesh/topology_change.h"
 #include "sim/cloth.h"
 
@@ -16,5 +18,14 @@ namespace weft {
 // The integrator's matrix pattern and the contact stage's collision structures are not touched
 // here: the world passes the change to Integrator::topologyChanged and ContactStage::clothTopologyChanged.
 void applyTopologyChange(Cloth& cloth, const TopologyChange& change);
+
+// For a series of changes made one after another (a step's tears): applyTopologyChange but the
+// hinges after each, then the hinges once, from the changed edges of each change in the order they
+// were made. The result is the same, hinge for hinge and in the same order, as applyTopologyChange
+// after each change: a hinge depends only on its edge's triangles and rest shapes, which a change
+// that touches them lists. Why: the hinges' pass runs over every hinge of the cloth, and a running
+// crack tears a dozen times a step.
+void applyTopologyChangeButHinges(Cloth& cloth, const TopologyChange& change);
+void refreshHingesAfter(Cloth& cloth, const std::vector<std::vector<int>>& changedEdgesInOrder);
 
 }  // namespace weft

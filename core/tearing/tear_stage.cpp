@@ -240,6 +240,7 @@ TopologyChange TearStage::tearCloth(Cloth& cloth, int clothIndex, const Membrane
   int tears = 0;
   int crackStarts = 0;
   std::deque<int> running;  // tips of this step's cracks, in the order they were made
+  std::vector<std::vector<int>> hingeChanges;  // each tear's changed edges: the hinges, after the loop
   for (int pass = 0; pass < 4 * kMaxTearsPerStep && tears < maxTears; ++pass) {
     std::optional<TearCandidate> best;
     {
@@ -321,7 +322,8 @@ TopologyChange TearStage::tearCloth(Cloth& cloth, int clothIndex, const Membrane
       search_.exclude(vertex);
       continue;
     }
-    applyTopologyChange(cloth, change);
+    applyTopologyChangeButHinges(cloth, change);
+    hingeChanges.push_back(change.changedEdges);
     updateTriangleCorners(cloth.mesh, change.changedTriangles, corners);
     nudgeCopiesApart(cloth.mesh, change);
     accumulateTopologyChange(changed, change);
@@ -385,6 +387,10 @@ TopologyChange TearStage::tearCloth(Cloth& cloth, int clothIndex, const Membrane
     vertices.insert(vertices.end(), change.crackEnds.begin(), change.crackEnds.end());
     vertices.push_back(vertex);
     search_.refresh(cloth.mesh, corners, stress_, restressed, vertices, stats_.search);
+  }
+  if (!hingeChanges.empty()) {
+    StageTimer timer(profile, "tear_surgery");
+    refreshHingesAfter(cloth, hingeChanges);
   }
   // A vertex not offered this step dropped below omega = 1, unless the step stopped before offering
   // everything above 1 (its tear budget ran out): then the vertices of the last step keep waiting.

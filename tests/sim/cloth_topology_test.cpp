@@ -12,11 +12,11 @@
 namespace weft {
 namespace {
 
-Cloth gridCloth() {
+Cloth gridCloth(int resolution = 5) {
   Cloth cloth;
   GridSpec spec;
-  spec.resolutionX = 5;
-  spec.resolutionY = 5;
+  spec.resolutionX = resolution;
+  spec.resolutionY = resolution;
   cloth.mesh = makeGrid(spec);
   assignLumpedMasses(cloth.mesh, cloth.material.areaDensity);
   rebuildElements(cloth);
@@ -45,6 +45,43 @@ TEST(ClothTopology, TornEdgesLoseTheirHingesAndNewTrianglesGetMembranes) {
   }
   EXPECT_GT(newInteriorEdges, 0);
   EXPECT_EQ(cloth.hinges.size(), buildBendingHinges(cloth.mesh, cloth.weftAngleRad).size());
+}
+
+// A step's tears refresh the hinges once (refreshHingesAfter): the same hinges, in the same order,
+// as refreshing them after every tear, on a crack whose later tears change the earlier ones' edges.
+TEST(ClothTopology, HingesRefreshedOnceForManyTearsEqualThoseRefreshedAfterEach) {
+  Cloth eachTime = gridCloth(9);
+  Cloth once = gridCloth(9);
+  std::vector<std::vector<int>> changedEdges;
+  // A crack along the middle row (vertex 40 is the centre of the 9 x 9 grid), then one across it
+  // at its end, and tears beside them that change the edges the first ones made.
+  const std::vector<std::pair<int, Vec2>> tears = {{40, Vec2(1, 0.3)}, {42, Vec2(1, 0.1)}, {38, Vec2(1, -0.2)},
+                                                   {24, Vec2(0.2, 1)}, {58, Vec2(-0.3, 1)}, {41, Vec2(0.1, 1)},
+                                                   {50, Vec2(1, 1)}};
+  int torn = 0;
+  for (const auto& [vertex, direction] : tears) {
+    TopologyChange first, second;
+    const bool a = tearThroughVertex(eachTime.mesh, vertex, direction, TearGuards{}, eachTime.material.areaDensity, first);
+    const bool b = tearThroughVertex(once.mesh, vertex, direction, TearGuards{}, once.material.areaDensity, second);
+    ASSERT_EQ(a, b);
+    if (!a) continue;
+    ++torn;
+    applyTopologyChange(eachTime, first);
+    applyTopologyChangeButHinges(once, second);
+    changedEdges.push_back(second.changedEdges);
+    EXPECT_EQ(once.membranes.size(), eachTime.membranes.size());
+  }
+  ASSERT_GE(torn, 3);
+  refreshHingesAfter(once, changedEdges);
+  ASSERT_EQ(once.hinges.size(), eachTime.hinges.size());
+  for (std::size_t h = 0; h < once.hinges.size(); ++h) {
+    EXPECT_EQ(once.hinges[h].edge, eachTime.hinges[h].edge) << h;
+    EXPECT_EQ(once.hinges[h].v, eachTime.hinges[h].v) << h;
+    EXPECT_EQ(once.hinges[h].restLength, eachTime.hinges[h].restLength) << h;
+    EXPECT_EQ(once.hinges[h].restAreaSum, eachTime.hinges[h].restAreaSum) << h;
+    EXPECT_EQ(once.hinges[h].edgeAngle, eachTime.hinges[h].edgeAngle) << h;
+  }
+  EXPECT_EQ(once.hinges.size(), buildBendingHinges(once.mesh, once.weftAngleRad).size());
 }
 
 TEST(ClothTopology, ACopyOfAPinnedVertexJoinsItsTrackAtTheSameStart) {
