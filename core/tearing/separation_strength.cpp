@@ -196,6 +196,21 @@ double separationBoundNear(const StressFan& fan, const LineSides& sides, double 
 
 namespace {
 
+// Third bound, for an open fan as wide as a straight border's, or nearly: byMean below is loose
+// there by the chord of a quarter circle (a factor of 1.41), which let every vertex of a loaded
+// border through to the search. With a = q1, b = -q2 and phi the angle between them, zeta =
+// min(|a|, |b|) cos(phi / 2) <= sqrt((|a||b| + a.b) / 2). For one stress S over a fan of angle pi,
+// a = S (u - w) and b = S (u + w) (u = g(ray), w = g(first spoke)), so |a||b| <= (|a|^2 + |b|^2) / 2
+// = |Su|^2 + |Sw|^2 (the parallelogram law) and a.b = |Su|^2 - |Sw|^2: zeta <= |S u| = |S n| <= |S|,
+// the traction across the ray. The sectors' own stresses move each side's force by at most D (their
+// deviation from S times their angles, each chord being shorter than its arc), and a fan of angle
+// F moves b by at most |S| |pi - F| more: with d their sum, zeta^2 <= |S|^2 + d (|a| + |b|) + d^2
+// <= |S|^2 + 2 sqrt(2) d |S| + d^2.
+double straightFanBound(double largestOfMean, double deviation, double openSpan) {
+  const double d = deviation + largestOfMean * std::abs(std::numbers::pi - openSpan);
+  return std::sqrt(largestOfMean * largestOfMean + 2.0 * std::numbers::sqrt2 * d * largestOfMean + d * d);
+}
+
 // separationStrengthBound over `count` sectors, sector k read through stressOf(k), largestOf(k)
 // (its spectral norm) and spanOf(k): one body for a built fan and for a closed fan's triangles,
 // so both give the same bound to the last bit.
@@ -222,7 +237,8 @@ double fanStrengthBound(std::size_t count, const StressOf& stressOf, const Large
   // is at most 2 sin(F / 4).
   const double byMean = closed ? spectralNorm(mean) + 0.25 * deviation
                                : 2.0 * std::sin(0.25 * openSpan) * spectralNorm(mean) + 0.5 * deviation;
-  return std::min(byArcs, byMean);
+  if (closed) return std::min(byArcs, byMean);
+  return std::min({byArcs, byMean, straightFanBound(spectralNorm(mean), deviation, openSpan)});
 }
 
 }  // namespace
