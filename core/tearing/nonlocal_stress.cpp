@@ -314,12 +314,17 @@ void NonlocalStress::resolveReadings(const ClothMesh& mesh, const StressLattice*
   // triangle that read the lattice needs a list if a crack's lip came within its reach (a tear
   // adds borders only as lips).
   changed.build(changedPlaces_, kernel_.spacing(), maxCells);
+  // The box above is widened to whole lattice cells (up to 1.9 times the disc's area): a list it
+  // lets through is rebuilt only if a changed place lies within the disc itself, which is what
+  // can change it (the same test as the walk's).
+  PointsNear changedInDisc;
+  changedInDisc.build(changedPlaces_, radius_);
   changedPlaces_.clear();
   const double near = kernel_.reach() + largestSize_;
   for (int t = 0; t < count; ++t) {
     switch (readsFrom_[t]) {
       case ReadsFrom::List:
-        if (changed.anyWithin(centroid_[t], radius_)) buildNeighbours(t);
+        if (changed.anyWithin(centroid_[t], radius_) && changedInDisc.anyWithin(centroid_[t])) buildNeighbours(t);
         continue;
       case ReadsFrom::Lattice:
         if (changed.anyWithin(centroid_[t], near) && lips.anyWithin(centroid_[t], near)) {

@@ -49,6 +49,7 @@
 
 #include "mesh/cloth_mesh.h"
 #include "tearing/box_counts.h"
+#include "tearing/points_near.h"
 #include "tearing/stress_kernel.h"
 #include "tearing/stress_lattice.h"
 #include "util/scratch.h"
