@@ -158,20 +158,28 @@ void NonlocalStress::thin(int t, std::vector<Neighbour>& list) {
 void NonlocalStress::buildNeighbours(int t) {
   const Vec2 centre = centroid_[t];
   const double radius2 = radius_ * radius_;
-  gather(t, [&](int other) { return (centroid_[other] - centre).squaredNorm() <= radius2; });
   std::vector<Neighbour>& list = neighbours_[t];
   list.clear();
   double weights = 0.0;
   const double inverseRadius2 = 1.0 / radius2;
-  for (int u : region_) {
-    if (lip_[u]) continue;
-    const double d2 = (centroid_[u] - centre).squaredNorm() * inverseRadius2;
+  // Each triangle the walk takes (lips too: the walk goes through them) joins the list as it is
+  // taken, so the list keeps the walk's order.
+  auto take = [&](int u, double distance2) {
+    if (lip_[u]) return;
+    const double d2 = distance2 * inverseRadius2;
     const double bell = (1.0 - d2) * (1.0 - d2);
     const double w = area_[u] * bell;
-    if (!(w > 0.0)) continue;  // adds nothing to the average: the list is what it reads
+    if (!(w > 0.0)) return;  // adds nothing to the average: the list is what it reads
     list.push_back({u, w});
     weights += w;
-  }
+  };
+  take(t, 0.0);
+  gather(t, [&](int other) {
+    const double distance2 = (centroid_[other] - centre).squaredNorm();
+    if (!(distance2 <= radius2)) return false;
+    take(other, distance2);
+    return true;
+  });
   if (list.size() > kMaxNeighbours) thin(t, list);
   // Stored as shares of the sum, then the sum of the rounded shares: the average is an exact
   // weighted mean of its list (a uniform stress is itself).
