@@ -36,7 +36,7 @@ class StressLattice {
   Reading read(const StressKernel::Place& at) const;
 
  private:
-  enum Channel { kXX, kYY, kXY, kWeight, kHot, kHotNear, kChannels };
+  enum Channel { kXX, kYY, kXY, kWeight, kChannels };
   using Node = std::array<double, kChannels>;
   std::size_t index(long i, long j) const {
     return static_cast<std::size_t>(i - lowI_) + static_cast<std::size_t>(j - lowJ_) * static_cast<std::size_t>(countI_);
@@ -44,6 +44,13 @@ class StressLattice {
   int hotReach_ = 0;
   long lowI_ = 0, lowJ_ = 0, countI_ = 0, countJ_ = 0;
   std::vector<Node> nodes_;  // the splatted sources, then (blur) their blurred sums
+  // Whether a hot source weighs anything at a point needs only which nodes its hat reaches (with
+  // a positive weight) and which the taps join, all positive: counted in integers, the hot
+  // sources per node, then summed over the taps' reach (hot) and over hotReach_ (hotNear), not
+  // carried through the blur as two more channels of doubles (a third of its work).
+  std::vector<int> hotSources_, hot_, hotNear_, countScratch_;
+  // `counts` summed over the nodes within `reach` along both axes, into `out`.
+  void boxSum(const std::vector<int>& counts, long reach, std::vector<int>& out);
 };
 
 }  // namespace weft
