@@ -121,7 +121,9 @@ std::size_t TearSearch::heapBytes() const {
          weft::heapBytes(walked_) + weft::heapBytes(bound_) + weft::heapBytes(best_) +
          weft::heapBytes(excluded_) + weft::heapBytes(held_) + weft::heapBytes(sharpened_) + weft::heapBytes(place_) +
          weft::heapBytes(crackVertices_) + weft::heapBytes(version_) + weft::heapBytes(waiting_) +
-         weft::heapBytes(evaluatedHeap_) + weft::heapBytes(unboundedHeap_);
+         weft::heapBytes(evaluatedHeap_) + weft::heapBytes(unboundedHeap_) + weft::heapBytes(rowMean_) +
+         weft::heapBytes(fromRows_) + weft::heapBytes(rowPlace_) + weft::heapBytes(aroundSpan_) +
+         weft::heapBytes(onBorder_) + weft::heapBytes(largestStress_) + weft::heapBytes(mature_);
 }
 
 std::size_t TearStage::heapBytes() const {
