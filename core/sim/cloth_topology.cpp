@@ -11,25 +11,6 @@ void refreshMembranes(Cloth& cloth, const TopologyChange& change) {
   for (int t : change.changedTriangles) cloth.membranes[t] = makeMembraneElement(cloth.mesh.tris[t], cloth.weftAngleRad);
 }
 
-// One pass over the hinges to drop the changed edges' (a hinge depends only on its edge's two
-// triangles), then one new hinge per changed interior edge. changedEdges is sorted.
-void refreshHinges(Cloth& cloth, const TopologyChange& change) {
-  if (!bendingEnabled(cloth.material.bending)) return;  // rebuildElements builds none either
-  const std::vector<int>& edges = change.changedEdges;
-  // A flag per edge, not a search of the list per hinge: this pass runs once per tear over every
-  // hinge of the cloth, and the search was most of a tear's bookkeeping.
-  std::vector<char> changed(cloth.mesh.edges.size(), 0);
-  for (int e : edges) changed[e] = 1;
-  std::erase_if(cloth.hinges, [&](const BendingHinge& h) {
-    return h.edge >= 0 && h.edge < static_cast<int>(changed.size()) && changed[h.edge];
-  });
-  for (int e : edges) {
-    if (std::optional<BendingHinge> hinge = makeBendingHinge(cloth.mesh, e, cloth.weftAngleRad)) {
-      cloth.hinges.push_back(*hinge);
-    }
-  }
-}
-
 // Inserts `vertex` (not yet in it) into a track, keeping its vertices sorted.
 void addToTrack(PinTrack& track, int vertex, const Vec3& start) {
   const auto slot = std::lower_bound(track.vertices.begin(), track.vertices.end(), vertex);
@@ -74,9 +55,8 @@ void extendPinTracks(Cloth& cloth, const TopologyChange& change) {
 }  // namespace
 
 void applyTopologyChange(Cloth& cloth, const TopologyChange& change) {
-  refreshMembranes(cloth, change);
-  refreshHinges(cloth, change);
-  extendPinTracks(cloth, change);
+  applyTopologyChangeButHinges(cloth, change);
+  refreshHingesAfter(cloth, {change.changedEdges});
 }
 
 void applyTopologyChangeButHinges(Cloth& cloth, const TopologyChange& change) {
@@ -85,7 +65,10 @@ void applyTopologyChangeButHinges(Cloth& cloth, const TopologyChange& change) {
 }
 
 void refreshHingesAfter(Cloth& cloth, const std::vector<std::vector<int>>& changedEdgesInOrder) {
+  // rebuildElements builds no hinges either without bending.
   if (!bendingEnabled(cloth.material.bending) || changedEdgesInOrder.empty()) return;
+  // One pass over the hinges of the cloth, with a flag (the last change) per edge, not a search of
+  // the lists per hinge (the search was most of a tear's bookkeeping).
   // Per edge, the last change that listed it: its hinge is that change's (an earlier change's was
   // dropped by a later one), and a hinge from before every change survives only if none listed it.
   std::vector<int> lastChange(cloth.mesh.edges.size(), -1);

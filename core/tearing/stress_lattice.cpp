@@ -43,10 +43,7 @@ void StressLattice::blur(int threads) {
   constexpr int reach = StressKernel::kTapReach;
   // In place: along x row by row, then along y column by column, each line copied out first so
   // that a node's sum reads the line as it was. Each node's sum runs over the taps in the same
-  // order whatever the thread count.
-  // The near-hot count is summed over hotReach_ nodes each way with equal taps (it only tells
-  // whether any is there).
-  const long hotReach = hotReach_;
+  // order whatever the thread count. The hot counts are summed by boxSum, in integers.
   auto blurLine = [](std::vector<Node>& line, Node* first, long count, long stride) {
     line.assign(first, first);  // emptied, capacity kept
     for (long k = 0; k < count; ++k) line.push_back(first[k * stride]);
